@@ -1,0 +1,37 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.api;
+
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * Settings fixed when the core starts. The ROS node declares a parameter of the same name for
+ * each and hands them over at start-up; the core never reads ROS parameters itself.
+ *
+ * @param fullEntityIri    answer entities as {@code <full IRI>} (true) or by their short name
+ * @param defaultReasoner  reasoner used when a LOAD or CREATE names none
+ * @param allowedDirs      LOAD FILE and SAVE paths must resolve inside one of these directories
+ * @param webLoading       whether LOAD WEB may fetch a URL
+ * @param lockWaitMs       how long a directive waits for a reference another directive is using
+ * @param reasonerTimeoutMs time limit handed to the reasoners (0 = none)
+ * @param mountLeaseS      a mount whose holder sent nothing for this long is released (0 = never)
+ */
+public record CoreConfig(
+        boolean fullEntityIri,
+        String defaultReasoner,
+        List<Path> allowedDirs,
+        boolean webLoading,
+        long lockWaitMs,
+        long reasonerTimeoutMs,
+        long mountLeaseS) {
+
+    public CoreConfig {
+        allowedDirs = List.copyOf(allowedDirs);
+        defaultReasoner = defaultReasoner == null || defaultReasoner.isBlank() ? "HERMIT" : defaultReasoner;
+    }
+
+    /** Settings for tests and embedding: full IRIs, HermiT, the given directories, generous waits. */
+    public static CoreConfig defaults(Path... allowedDirs) {
+        return new CoreConfig(true, "HERMIT", List.of(allowedDirs), false, 30_000, 0, 0);
+    }
+}

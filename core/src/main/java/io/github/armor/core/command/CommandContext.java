@@ -1,0 +1,127 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.command;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.CoreConfig;
+import io.github.armor.core.api.Directive;
+import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.api.Response;
+import io.github.armor.core.reference.Reference;
+import io.github.armor.core.reference.ReferenceRegistry;
+import java.util.List;
+import org.semanticweb.owlapi.model.EntityType;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLDataProperty;
+import org.semanticweb.owlapi.model.OWLLiteral;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.model.OWLObjectProperty;
+import org.semanticweb.owlapi.model.OWLOntologyChange;
+
+/** What a command handler sees: the directive, its reference (if any), the registry and the settings. */
+public final class CommandContext {
+    private final Directive directive;
+    private final Reference reference;
+    private final ReferenceRegistry references;
+    private final CoreConfig config;
+    private final Rendering rendering;
+    private final DirectiveLog log;
+
+    public CommandContext(Directive directive, Reference reference, ReferenceRegistry references,
+                          CoreConfig config, Rendering rendering, DirectiveLog log) {
+        this.directive = directive;
+        this.reference = reference;
+        this.references = references;
+        this.config = config;
+        this.rendering = rendering;
+        this.log = log;
+    }
+
+    public DirectiveLog log() {
+        return log;
+    }
+
+    public Directive directive() {
+        return directive;
+    }
+
+    public Reference reference() {
+        return reference;
+    }
+
+    public ReferenceRegistry references() {
+        return references;
+    }
+
+    public CoreConfig config() {
+        return config;
+    }
+
+    public Rendering render() {
+        return rendering;
+    }
+
+    public OWLDataFactory factory() {
+        return reference.factory();
+    }
+
+    public List<String> args() {
+        return directive.args();
+    }
+
+    public String arg(int index) {
+        return directive.args().get(index);
+    }
+
+    public boolean hasArg(int index) {
+        return directive.args().size() > index && !directive.args().get(index).isEmpty();
+    }
+
+    public OWLNamedIndividual individual(int index) {
+        return reference.names().entity(EntityType.NAMED_INDIVIDUAL, arg(index));
+    }
+
+    public OWLClass owlClass(int index) {
+        return reference.names().entity(EntityType.CLASS, arg(index));
+    }
+
+    public OWLObjectProperty objectProperty(int index) {
+        return reference.names().entity(EntityType.OBJECT_PROPERTY, arg(index));
+    }
+
+    public OWLDataProperty dataProperty(int index) {
+        return reference.names().entity(EntityType.DATA_PROPERTY, arg(index));
+    }
+
+    /** A literal from a (type, value) argument pair. */
+    public OWLLiteral literal(int typeIndex, int valueIndex) {
+        return Literals.literal(factory(), reference.names(), arg(typeIndex), arg(valueIndex));
+    }
+
+    /** A boolean flag argument: exactly true or false, any case. */
+    public boolean flag(int index) {
+        String value = arg(index).trim();
+        if (value.equalsIgnoreCase("true")) {
+            return true;
+        }
+        if (value.equalsIgnoreCase("false")) {
+            return false;
+        }
+        throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "argument " + index + " of "
+                + directive.describe() + " must be true or false, got '" + value + "'");
+    }
+
+    /** Applies (or queues) changes and answers success. */
+    public Response change(List<? extends OWLOntologyChange> changes) {
+        reference.change(changes);
+        return ok(List.of());
+    }
+
+    public Response ok(List<String> objects) {
+        return Response.ok(reference == null || reference.isConsistent(), objects);
+    }
+
+    public Response ok() {
+        return ok(List.of());
+    }
+}

@@ -1,0 +1,115 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.command;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.reference.Reference;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.function.Function;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import org.semanticweb.owlapi.apibinding.OWLManager;
+import org.semanticweb.owlapi.model.OWLAxiom;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLClassExpression;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.OWLOntologyCreationException;
+import org.semanticweb.owlapi.model.OWLOntologyManager;
+import org.semanticweb.owlapi.model.parameters.Imports;
+import org.semanticweb.owlapi.reasoner.OWLReasoner;
+import org.semanticweb.owlapi.search.EntitySearcher;
+import org.semanticweb.owlapi.util.InferredAxiomGenerator;
+import org.semanticweb.owlapi.util.InferredClassAssertionAxiomGenerator;
+import org.semanticweb.owlapi.util.InferredDataPropertyCharacteristicAxiomGenerator;
+import org.semanticweb.owlapi.util.InferredEquivalentClassAxiomGenerator;
+import org.semanticweb.owlapi.util.InferredPropertyAssertionGenerator;
+import org.semanticweb.owlapi.util.InferredSubClassAxiomGenerator;
+
+/**
+ * Answers as the contract wants them: the union of what the ontology asserts and what the
+ * reasoner infers. The asserted half matters with a buffered reasoner, which has not yet seen
+ * the changes applied since the last REASON.
+ */
+final class Inferences {
+    private Inferences() {}
+
+    /**
+     * What the reasoner answers, or nothing when this reasoner cannot answer that kind of
+     * question (ELK has no property-value queries): the asserted half still answers.
+     */
+    static <T> Stream<T> inferred(Reference reference, Function<OWLReasoner, Stream<T>> question) {
+        OWLReasoner reasoner = reference.reasonerForQuery();
+        try {
+            return reference.guardReasoner(() -> question.apply(reasoner).toList()).stream();
+        } catch (ArmorException e) {
+            if (e.exitCode() == ExitCode.NOT_SUPPORTED) {
+                return Stream.empty();
+            }
+            throw e;
+        }
+    }
+
+    static Stream<OWLOntology> closure(Reference reference) {
+        return reference.ontology().importsClosure();
+    }
+
+    static Set<OWLNamedIndividual> instances(Reference reference, OWLClassExpression owlClass, boolean direct) {
+        Stream<OWLNamedIndividual> asserted = owlClass.isAnonymous() ? Stream.empty()
+                : EntitySearcher.getIndividuals(owlClass.asOWLClass(), closure(reference))
+                .filter(i -> i.isNamed()).map(i -> i.asOWLNamedIndividual());
+        return union(asserted, inferred(reference, r -> r.getInstances(owlClass, direct).entities()));
+    }
+
+    static Set<OWLClass> subClasses(Reference reference, OWLClassExpression owlClass, boolean direct) {
+        Stream<OWLClass> asserted = owlClass.isAnonymous() ? Stream.empty()
+                : EntitySearcher.getSubClasses(owlClass.asOWLClass(), closure(reference))
+                .filter(c -> !c.isAnonymous()).map(OWLClassExpression::asOWLClass);
+        return union(asserted, inferred(reference, r -> r.getSubClasses(owlClass, direct).entities()));
+    }
+
+    @SafeVarargs
+    static <T> Set<T> union(Stream<? extends T>... parts) {
+        return Stream.of(parts).flatMap(s -> s).collect(Collectors.toCollection(LinkedHashSet::new));
+    }
+
+    /**
+     * A copy of the ontology with the inferred class assertions, property assertions and class
+     * hierarchy added; the live ontology is left as it was (SAVE INFERENCE).
+     */
+    static OWLOntology withInferences(Reference reference) {
+        OWLReasoner reasoner = reference.reasonerForQuery();
+        OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
+        OWLOntology copy;
+        try {
+            copy = manager.createOntology(reference.ontology().getOntologyID());
+        } catch (OWLOntologyCreationException e) {
+            throw new ArmorException(ExitCode.INTERNAL_ERROR, "could not copy the ontology: " + e.getMessage(), e);
+        }
+        manager.addAxioms(copy, reference.ontology().axioms(Imports.INCLUDED));
+        OWLOntologyManager liveManager = reference.manager();
+        if (liveManager.getOntologyFormat(reference.ontology()) != null) {
+            manager.setOntologyFormat(copy, liveManager.getOntologyFormat(reference.ontology()));
+        }
+        List<InferredAxiomGenerator<? extends OWLAxiom>> generators = List.of(
+                new InferredSubClassAxiomGenerator(),
+                new InferredEquivalentClassAxiomGenerator(),
+                new InferredClassAssertionAxiomGenerator(),
+                new InferredPropertyAssertionGenerator(),
+                new InferredDataPropertyCharacteristicAxiomGenerator());
+        for (InferredAxiomGenerator<? extends OWLAxiom> generator : generators) {
+            try {
+                Set<? extends OWLAxiom> axioms = reference.guardReasoner(
+                        () -> generator.createAxioms(manager.getOWLDataFactory(), reasoner));
+                manager.addAxioms(copy, axioms.stream().map(OWLAxiom.class::cast));
+            } catch (ArmorException e) {
+                if (e.exitCode() != ExitCode.NOT_SUPPORTED) {
+                    throw e;
+                }
+            }
+        }
+        return copy;
+    }
+}

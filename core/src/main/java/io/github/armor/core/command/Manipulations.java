@@ -1,0 +1,242 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.command;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.reference.Reference;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.function.Function;
+import java.util.stream.Collectors;
+import java.util.stream.IntStream;
+import org.semanticweb.owlapi.model.AddAxiom;
+import org.semanticweb.owlapi.model.EntityType;
+import org.semanticweb.owlapi.model.IRI;
+import org.semanticweb.owlapi.model.OWLAxiom;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLClassExpression;
+import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLDataProperty;
+import org.semanticweb.owlapi.model.OWLEntity;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.model.OWLObjectProperty;
+import org.semanticweb.owlapi.model.OWLOntologyChange;
+import org.semanticweb.owlapi.model.OWLSubClassOfAxiom;
+import org.semanticweb.owlapi.model.RemoveAxiom;
+import org.semanticweb.owlapi.model.parameters.Imports;
+import org.semanticweb.owlapi.util.OWLEntityRemover;
+import org.semanticweb.owlapi.util.OWLEntityRenamer;
+
+/** Contract 5.2: every change a client can make, each refused with 102 under a foreign mount. */
+final class Manipulations {
+    private Manipulations() {}
+
+    static void register(CommandTable table) {
+        registerArmorCommands(table);
+        registerPairs(table);
+        registerRenames(table);
+    }
+
+    private static void registerArmorCommands(CommandTable table) {
+        table.command("ADD IND").args("ind").manipulation(c -> c.change(adds(c, List.of(
+                c.factory().getOWLDeclarationAxiom(c.individual(0)),
+                c.factory().getOWLClassAssertionAxiom(c.factory().getOWLThing(), c.individual(0))))));
+        table.command("ADD CLASS").args("class").manipulation(c -> c.change(adds(c, List.of(
+                c.factory().getOWLDeclarationAxiom(c.owlClass(0)),
+                c.factory().getOWLSubClassOfAxiom(c.owlClass(0), c.factory().getOWLThing())))));
+        table.command("ADD CARDINALITY MIN").alias("ADD MIN CARDINALITY")
+                .args("class", "object prop", "n", "value class")
+                .manipulation(c -> c.change(adds(c, List.of(c.factory().getOWLSubClassOfAxiom(c.owlClass(0),
+                        c.factory().getOWLObjectMinCardinality(cardinality(c.arg(2)), c.objectProperty(1),
+                                c.owlClass(3)))))));
+        table.command("DISJOINT IND").args("ind", "ind").variadic().manipulation(c -> c.change(adds(c, List.of(
+                c.factory().getOWLDifferentIndividualsAxiom(all(c, CommandContext::individual))))));
+        table.command("DISJOINT CLASS").args("class", "class").variadic().manipulation(c -> c.change(adds(c, List.of(
+                c.factory().getOWLDisjointClassesAxiom(all(c, CommandContext::owlClass))))));
+        table.command("DISJOINT IND CLASS").args("class").manipulation(c -> {
+            Set<OWLNamedIndividual> members = Inferences.instances(c.reference(), c.owlClass(0), false);
+            return c.change(members.size() < 2 ? List.of()
+                    : adds(c, List.of(c.factory().getOWLDifferentIndividualsAxiom(members))));
+        });
+        table.command("DISJOINT CLASS CLASS").args("class").manipulation(c -> {
+            Set<OWLClass> children = Inferences.subClasses(c.reference(), c.owlClass(0), true);
+            return c.change(children.size() < 2 ? List.of()
+                    : adds(c, List.of(c.factory().getOWLDisjointClassesAxiom(children))));
+        });
+        table.command("MAKE EQUIVALENT CLASS").args("class").manipulation(c -> c.change(makeEquivalentChanges(c)));
+        table.command("REMOVE IND").args("ind").manipulation(c -> c.change(removeEntity(c.reference(),
+                c.individual(0))));
+        table.command("REMOVE CLASS").args("class").manipulation(c -> c.change(removeEntity(c.reference(),
+                c.owlClass(0))));
+        table.command("REPLACE DATAPROP IND").args("prop", "ind", "type", "new value", "old value")
+                .manipulation(c -> {
+                    OWLDataFactory f = c.factory();
+                    List<OWLOntologyChange> changes = new ArrayList<>(removes(c, List.of(f.getOWLDataPropertyAssertionAxiom(
+                            c.dataProperty(0), c.individual(1), c.literal(2, 4)))));
+                    changes.addAll(adds(c, List.of(f.getOWLDataPropertyAssertionAxiom(c.dataProperty(0),
+                            c.individual(1), c.literal(2, 3)))));
+                    return c.change(changes);
+                });
+        table.command("REPLACE OBJECTPROP IND").args("prop", "ind", "new value", "old value")
+                .manipulation(c -> {
+                    OWLDataFactory f = c.factory();
+                    List<OWLOntologyChange> changes = new ArrayList<>(removes(c, List.of(
+                            f.getOWLObjectPropertyAssertionAxiom(c.objectProperty(0), c.individual(1),
+                                    c.individual(3)))));
+                    changes.addAll(adds(c, List.of(f.getOWLObjectPropertyAssertionAxiom(c.objectProperty(0),
+                            c.individual(1), c.individual(2)))));
+                    return c.change(changes);
+                });
+    }
+
+    /** Commands that exist as ADD X and REMOVE X over the same axioms. */
+    private static void registerPairs(CommandTable table) {
+        pair(table, "IND CLASS", new String[] {"ind", "class"}, false,
+                c -> List.of(c.factory().getOWLClassAssertionAxiom(c.owlClass(1), c.individual(0))));
+        pair(table, "CLASS CLASS", new String[] {"sub", "super"}, false,
+                c -> List.of(c.factory().getOWLSubClassOfAxiom(c.owlClass(0), c.owlClass(1))));
+        pair(table, "DATAPROP IND", new String[] {"prop", "ind", "type", "value"}, false,
+                c -> List.of(c.factory().getOWLDataPropertyAssertionAxiom(c.dataProperty(0), c.individual(1),
+                        c.literal(2, 3))));
+        pair(table, "OBJECTPROP IND", new String[] {"prop", "ind", "value ind"}, false,
+                c -> List.of(c.factory().getOWLObjectPropertyAssertionAxiom(c.objectProperty(0), c.individual(1),
+                        c.individual(2))));
+        pair(table, "OBJECTPROP OBJECTPROP", new String[] {"sub", "super"}, false,
+                c -> List.of(c.factory().getOWLSubObjectPropertyOfAxiom(c.objectProperty(0), c.objectProperty(1))));
+        pair(table, "DATAPROP DATAPROP", new String[] {"sub", "super"}, false,
+                c -> List.of(c.factory().getOWLSubDataPropertyOfAxiom(c.dataProperty(0), c.dataProperty(1))));
+        pair(table, "OBJECTPROP INVERSE", new String[] {"prop", "inverse prop"}, false,
+                c -> List.of(c.factory().getOWLInverseObjectPropertiesAxiom(c.objectProperty(0),
+                        c.objectProperty(1))));
+        pair(table, "OBJECTPROP CHARACTERISTIC", new String[] {"prop", "characteristic"}, false,
+                c -> List.of(objectCharacteristic(c.factory(), c.objectProperty(0), c.arg(1))));
+        pair(table, "DATAPROP CHARACTERISTIC", new String[] {"prop", "characteristic"}, false,
+                c -> List.of(dataCharacteristic(c.factory(), c.dataProperty(0), c.arg(1))));
+        pair(table, "OBJECTPROP DOMAIN", new String[] {"prop", "class"}, false,
+                c -> List.of(c.factory().getOWLObjectPropertyDomainAxiom(c.objectProperty(0), c.owlClass(1))));
+        pair(table, "OBJECTPROP RANGE", new String[] {"prop", "class"}, false,
+                c -> List.of(c.factory().getOWLObjectPropertyRangeAxiom(c.objectProperty(0), c.owlClass(1))));
+        pair(table, "DATAPROP DOMAIN", new String[] {"prop", "class"}, false,
+                c -> List.of(c.factory().getOWLDataPropertyDomainAxiom(c.dataProperty(0), c.owlClass(1))));
+        pair(table, "DATAPROP RANGE", new String[] {"prop", "datatype"}, false,
+                c -> List.of(c.factory().getOWLDataPropertyRangeAxiom(c.dataProperty(0),
+                        Literals.datatype(c.factory(), c.reference().names(), c.arg(1)))));
+        pair(table, "IND SAME", new String[] {"ind", "ind"}, true,
+                c -> List.of(c.factory().getOWLSameIndividualAxiom(all(c, CommandContext::individual))));
+        pair(table, "CLASS EQUIVALENT", new String[] {"class", "class expression"}, false,
+                c -> List.of(c.factory().getOWLEquivalentClassesAxiom(c.owlClass(0),
+                        Syntax.classExpression(c.reference(), c.arg(1)))));
+        pair(table, "AXIOM", new String[] {"axiom"}, false,
+                c -> List.of(Syntax.axiom(c.reference(), c.arg(0))));
+        pair(table, "SWRL", new String[] {"rule name", "rule"}, false,
+                c -> List.of(Syntax.rule(c.reference(), c.arg(0), c.arg(1))));
+    }
+
+    private static void registerRenames(CommandTable table) {
+        List<EntityType<?>> kinds = List.of(EntityType.NAMED_INDIVIDUAL, EntityType.CLASS, EntityType.DATA_PROPERTY,
+                EntityType.OBJECT_PROPERTY);
+        List<String> words = List.of("IND", "CLASS", "DATAPROP", "OBJECTPROP");
+        for (int i = 0; i < kinds.size(); i++) {
+            EntityType<?> kind = kinds.get(i);
+            table.command("RENAME " + words.get(i)).args("old name", "new name").manipulation(c -> {
+                Reference reference = c.reference();
+                IRI from = reference.names().iri(kind, c.arg(0));
+                IRI to = reference.names().iri(kind, c.arg(1));
+                OWLEntityRenamer renamer = new OWLEntityRenamer(reference.manager(),
+                        Collections.singleton(reference.ontology()));
+                return c.change(renamer.changeIRI(from, to));
+            });
+        }
+    }
+
+    private static void pair(CommandTable table, String words, String[] args, boolean variadic,
+                             Function<CommandContext, List<? extends OWLAxiom>> axioms) {
+        CommandTable.Builder add = table.command("ADD " + words).args(args);
+        CommandTable.Builder remove = table.command("REMOVE " + words).args(args);
+        if (variadic) {
+            add.variadic();
+            remove.variadic();
+        }
+        add.manipulation(c -> c.change(adds(c, axioms.apply(c))));
+        remove.manipulation(c -> c.change(removes(c, axioms.apply(c))));
+    }
+
+
+    private static OWLAxiom objectCharacteristic(OWLDataFactory f, OWLObjectProperty p, String characteristic) {
+        return switch (characteristic.trim().toUpperCase(Locale.ROOT)) {
+            case "FUNCTIONAL" -> f.getOWLFunctionalObjectPropertyAxiom(p);
+            case "INVERSE_FUNCTIONAL" -> f.getOWLInverseFunctionalObjectPropertyAxiom(p);
+            case "TRANSITIVE" -> f.getOWLTransitiveObjectPropertyAxiom(p);
+            case "SYMMETRIC" -> f.getOWLSymmetricObjectPropertyAxiom(p);
+            case "ASYMMETRIC" -> f.getOWLAsymmetricObjectPropertyAxiom(p);
+            case "REFLEXIVE" -> f.getOWLReflexiveObjectPropertyAxiom(p);
+            case "IRREFLEXIVE" -> f.getOWLIrreflexiveObjectPropertyAxiom(p);
+            default -> throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "unknown characteristic '" + characteristic
+                    + "': expected FUNCTIONAL, INVERSE_FUNCTIONAL, TRANSITIVE, SYMMETRIC, ASYMMETRIC, REFLEXIVE"
+                    + " or IRREFLEXIVE");
+        };
+    }
+
+    private static OWLAxiom dataCharacteristic(OWLDataFactory f, OWLDataProperty p, String characteristic) {
+        if (!characteristic.trim().equalsIgnoreCase("FUNCTIONAL")) {
+            throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "a data property can only be FUNCTIONAL in OWL 2, not '"
+                    + characteristic + "'");
+        }
+        return f.getOWLFunctionalDataPropertyAxiom(p);
+    }
+
+
+
+    private static List<OWLOntologyChange> makeEquivalentChanges(CommandContext c) {
+        Reference reference = c.reference();
+        OWLClass owlClass = c.owlClass(0);
+        List<OWLSubClassOfAxiom> subClassOf = reference.ontology().subClassAxiomsForSubClass(owlClass).toList();
+        if (subClassOf.isEmpty()) {
+            throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "class '" + c.arg(0)
+                    + "' has no superclasses to make it equivalent to");
+        }
+        Set<OWLClassExpression> supers = subClassOf.stream().map(OWLSubClassOfAxiom::getSuperClass)
+                .collect(Collectors.toCollection(LinkedHashSet::new));
+        OWLClassExpression definition = supers.size() == 1 ? supers.iterator().next()
+                : c.factory().getOWLObjectIntersectionOf(supers);
+        List<OWLOntologyChange> changes = new ArrayList<>(removes(c, subClassOf));
+        changes.addAll(adds(c, List.of(c.factory().getOWLEquivalentClassesAxiom(owlClass, definition))));
+        return changes;
+    }
+
+
+    private static List<OWLOntologyChange> removeEntity(Reference reference, OWLEntity entity) {
+        OWLEntityRemover remover = new OWLEntityRemover(reference.ontology().importsClosure());
+        entity.accept(remover);
+        return new ArrayList<>(remover.getChanges());
+    }
+
+    private static <T> Set<T> all(CommandContext c, java.util.function.BiFunction<CommandContext, Integer, T> entity) {
+        return IntStream.range(0, c.args().size()).mapToObj(i -> entity.apply(c, i))
+                .collect(Collectors.toCollection(LinkedHashSet::new));
+    }
+
+    static int cardinality(String text) {
+        try {
+            int n = Integer.parseInt(text.trim());
+            if (n >= 0) {
+                return n;
+            }
+        } catch (NumberFormatException e) {
+            // answered below
+        }
+        throw new ArmorException(ExitCode.BAD_DATA_TYPE, "cardinality must be a whole number >= 0, got '" + text + "'");
+    }
+
+    static List<OWLOntologyChange> adds(CommandContext c, List<? extends OWLAxiom> axioms) {
+        return axioms.stream().map(a -> (OWLOntologyChange) new AddAxiom(c.reference().ontology(), a)).toList();
+    }
+
+    static List<OWLOntologyChange> removes(CommandContext c, List<? extends OWLAxiom> axioms) {
+        return axioms.stream().map(a -> (OWLOntologyChange) new RemoveAxiom(c.reference().ontology(), a)).toList();
+    }
+}

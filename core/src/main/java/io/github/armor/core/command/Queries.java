@@ -1,0 +1,168 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.command;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.api.Response;
+import io.github.armor.core.reference.Reference;
+import java.util.List;
+import java.util.Set;
+import java.util.stream.Stream;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLClassExpression;
+import org.semanticweb.owlapi.model.OWLDataProperty;
+import org.semanticweb.owlapi.model.OWLLiteral;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.model.OWLObjectProperty;
+import org.semanticweb.owlapi.model.OWLObjectPropertyExpression;
+import org.semanticweb.owlapi.model.OWLRestriction;
+import org.semanticweb.owlapi.model.parameters.Imports;
+import org.semanticweb.owlapi.search.EntitySearcher;
+
+/** Contract 5.3: every question, answered from asserted plus inferred knowledge, sorted. */
+final class Queries {
+    private Queries() {}
+
+    static void register(CommandTable table) {
+        registerIndividualQueries(table);
+        registerClassQueries(table);
+        registerPropertyQueries(table);
+        table.command("QUERY SPARQL").args("query").variadic().query(c -> Sparql.answer(c, false));
+        table.command("QUERY SPARQL FORMATTED").args("query").variadic().query(c -> Sparql.answer(c, true));
+        table.command("QUERY CONSISTENCY").query(Explanations::answer);
+    }
+
+    private static void registerIndividualQueries(CommandTable table) {
+        table.command("QUERY IND").args("ind").query(c -> c.ok(c.render().entities(types(c.reference(),
+                c.individual(0), false).stream())));
+        table.command("QUERY IND CLASS").args("class").query(c -> c.ok(c.render().entities(
+                Inferences.instances(c.reference(), c.owlClass(0), false).stream())));
+        table.command("QUERY IND DL").args("class expression").query(c -> c.ok(c.render().entities(
+                Inferences.instances(c.reference(), Syntax.classExpression(c.reference(), c.arg(0)), false)
+                        .stream())));
+        table.command("QUERY CLASS IND").args("ind").optional("most specific only").query(c -> {
+            boolean direct = c.hasArg(1) && c.flag(1);
+            return c.ok(c.render().entities(types(c.reference(), c.individual(0), direct).stream()));
+        });
+        table.command("QUERY IND SAME").args("ind").query(c -> {
+            OWLNamedIndividual individual = c.individual(0);
+            Set<OWLNamedIndividual> same = Inferences.union(
+                    EntitySearcher.getSameIndividuals(individual, Inferences.closure(c.reference()))
+                            .filter(i -> i.isNamed()).map(i -> i.asOWLNamedIndividual()),
+                    Inferences.inferred(c.reference(), r -> r.getSameIndividuals(individual).entities()));
+            same.remove(individual);
+            return c.ok(c.render().entities(same.stream()));
+        });
+        table.command("QUERY IND DATAPROP").args("ind").query(c -> {
+            Reference reference = c.reference();
+            OWLNamedIndividual individual = c.individual(0);
+            Stream<OWLDataProperty> inferred = reference.ontology().dataPropertiesInSignature(Imports.INCLUDED)
+                    .filter(p -> !dataValues(reference, p, individual).isEmpty());
+            return c.ok(c.render().entities(inferred));
+        });
+        table.command("QUERY IND OBJECTPROP").args("ind").query(c -> {
+            Reference reference = c.reference();
+            OWLNamedIndividual individual = c.individual(0);
+            Stream<OWLObjectProperty> inferred = reference.ontology().objectPropertiesInSignature(Imports.INCLUDED)
+                    .filter(p -> !objectValues(reference, p, individual).isEmpty());
+            return c.ok(c.render().entities(inferred));
+        });
+    }
+
+    private static void registerClassQueries(CommandTable table) {
+        table.command("QUERY CLASS CLASS").args("class").query(c -> c.ok(c.render().entities(
+                Inferences.subClasses(c.reference(), c.owlClass(0), false).stream())));
+        table.command("QUERY CLASS DL").args("class expression").query(c -> c.ok(c.render().entities(
+                Inferences.subClasses(c.reference(), Syntax.classExpression(c.reference(), c.arg(0)), false)
+                        .stream())));
+        table.command("QUERY CLASS SUPER").args("class").query(c -> {
+            OWLClass owlClass = c.owlClass(0);
+            Set<OWLClass> supers = Inferences.union(
+                    EntitySearcher.getSuperClasses(owlClass, Inferences.closure(c.reference()))
+                            .filter(e -> !e.isAnonymous()).map(OWLClassExpression::asOWLClass),
+                    Inferences.inferred(c.reference(), r -> r.getSuperClasses(owlClass, false).entities()));
+            return c.ok(c.render().entities(supers.stream()));
+        });
+        table.command("QUERY CLASS EQUIVALENT").args("class").query(c -> {
+            OWLClass owlClass = c.owlClass(0);
+            Set<OWLClass> equivalent = Inferences.union(
+                    EntitySearcher.getEquivalentClasses(owlClass, Inferences.closure(c.reference()))
+                            .filter(e -> !e.isAnonymous()).map(OWLClassExpression::asOWLClass),
+                    Inferences.inferred(c.reference(), r -> r.getEquivalentClasses(owlClass).entities()));
+            equivalent.remove(owlClass);
+            return c.ok(c.render().entities(equivalent.stream()));
+        });
+        table.command("QUERY CLASS DISJOINT").args("class").query(c -> {
+            OWLClass owlClass = c.owlClass(0);
+            Set<OWLClass> disjoint = Inferences.union(
+                    EntitySearcher.getDisjointClasses(owlClass, Inferences.closure(c.reference()))
+                            .filter(e -> !e.isAnonymous()).map(OWLClassExpression::asOWLClass),
+                    Inferences.inferred(c.reference(), r -> r.getDisjointClasses(owlClass).entities()));
+            disjoint.remove(owlClass);
+            return c.ok(c.render().entities(disjoint.stream()));
+        });
+        table.command("QUERY CLASS RESTRICTIONS").args("class").query(c -> {
+            OWLClass owlClass = c.owlClass(0);
+            Stream<OWLClassExpression> definitions = Stream.concat(
+                    EntitySearcher.getSuperClasses(owlClass, Inferences.closure(c.reference())),
+                    EntitySearcher.getEquivalentClasses(owlClass, Inferences.closure(c.reference())));
+            List<String> restrictions = definitions.flatMap(OWLClassExpression::conjunctSet)
+                    .filter(e -> e instanceof OWLRestriction)
+                    .map(e -> Syntax.render(c.reference(), c.config().fullEntityIri(), e))
+                    .distinct().sorted().toList();
+            return c.ok(restrictions);
+        });
+    }
+
+    private static void registerPropertyQueries(CommandTable table) {
+        table.command("QUERY OBJECTPROP IND").args("prop", "ind").query(c -> c.ok(c.render().entities(
+                objectValues(c.reference(), c.objectProperty(0), c.individual(1)).stream())));
+        table.command("QUERY DATAPROP IND").args("prop", "ind").query(c -> c.ok(Rendering.literals(
+                dataValues(c.reference(), c.dataProperty(0), c.individual(1)))));
+        table.command("QUERY OBJECTPROP OBJECTPROP").args("prop").query(c -> {
+            OWLObjectProperty property = c.objectProperty(0);
+            Set<OWLObjectProperty> subs = Inferences.union(
+                    EntitySearcher.getSubProperties(property, Inferences.closure(c.reference()))
+                            .filter(p -> p.isNamed()).map(OWLObjectPropertyExpression::asOWLObjectProperty),
+                    Inferences.inferred(c.reference(), r -> r.getSubObjectProperties(property, false).entities()
+                            .filter(p -> p.isNamed()).map(OWLObjectPropertyExpression::asOWLObjectProperty)));
+            subs.remove(property);
+            return c.ok(c.render().entities(subs.stream()));
+        });
+        table.command("QUERY DATAPROP DATAPROP").args("prop").query(c -> {
+            OWLDataProperty property = c.dataProperty(0);
+            Set<OWLDataProperty> subs = Inferences.union(
+                    EntitySearcher.getSubProperties(property, Inferences.closure(c.reference()))
+                            .map(p -> p.asOWLDataProperty()),
+                    Inferences.inferred(c.reference(), r -> r.getSubDataProperties(property, false).entities()));
+            subs.remove(property);
+            return c.ok(c.render().entities(subs.stream()));
+        });
+    }
+
+    private static Set<OWLClass> types(Reference reference, OWLNamedIndividual individual, boolean direct) {
+        Set<OWLClass> inferred = Inferences.union(Inferences.inferred(reference,
+                r -> r.getTypes(individual, direct).entities()));
+        inferred.removeIf(OWLClass::isOWLThing);
+        if (direct && !inferred.isEmpty()) {
+            return inferred;
+        }
+        return Inferences.union(EntitySearcher.getTypes(individual, Inferences.closure(reference))
+                .filter(t -> !t.isAnonymous()).map(OWLClassExpression::asOWLClass), inferred.stream());
+    }
+
+    static Set<OWLNamedIndividual> objectValues(Reference reference, OWLObjectProperty property,
+                                                OWLNamedIndividual individual) {
+        return Inferences.union(
+                EntitySearcher.getObjectPropertyValues(individual, property, Inferences.closure(reference))
+                        .filter(i -> i.isNamed()).map(i -> i.asOWLNamedIndividual()),
+                Inferences.inferred(reference, r -> r.getObjectPropertyValues(individual, property).entities()));
+    }
+
+    static Set<OWLLiteral> dataValues(Reference reference, OWLDataProperty property, OWLNamedIndividual individual) {
+        return Inferences.union(
+                EntitySearcher.getDataPropertyValues(individual, property, Inferences.closure(reference)),
+                Inferences.inferred(reference, r -> r.getDataPropertyValues(individual, property).stream()));
+    }
+
+}

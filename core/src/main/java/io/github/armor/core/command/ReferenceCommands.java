@@ -1,0 +1,155 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.command;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.api.Response;
+import io.github.armor.core.reference.EntityResolver;
+import io.github.armor.core.reference.OntologyFiles;
+import io.github.armor.core.reference.ReasonerRegistry;
+import io.github.armor.core.reference.Reference;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
+import org.semanticweb.owlapi.model.OWLDocumentFormat;
+import org.semanticweb.owlapi.model.OWLOntology;
+
+/** Contract 5.1: creating, saving and dropping references, mounting, and the utilities. */
+final class ReferenceCommands {
+    private ReferenceCommands() {}
+
+    static void register(CommandTable table) {
+        for (String mode : List.of("-", "MOUNTED")) {
+            boolean mount = mode.equals("MOUNTED");
+            table.command("LOAD FILE " + mode)
+                    .args("path", "ontology IRI", "buffered manipulation", "reasoner", "buffered reasoner")
+                    .creating(c -> load(c, 0, mount, c.arg(0), files(c)::loadFile));
+            table.command("LOAD WEB " + mode)
+                    .args("URL", "ontology IRI", "buffered manipulation", "reasoner", "buffered reasoner")
+                    .creating(c -> load(c, 0, mount, c.arg(0), files(c)::loadWeb));
+        }
+        table.command("CREATE")
+                .args("ontology IRI", "buffered manipulation", "reasoner", "buffered reasoner")
+                .creating(c -> load(c, -1, false, null, ignored -> files(c).create(c.arg(0))));
+        table.command("SAVE").optional("path", "format").onReference(c -> save(c, false));
+        table.command("SAVE INFERENCE").optional("path", "format").onReference(c -> save(c, true));
+        table.command("DROP").onReference(c -> {
+            c.references().remove(c.reference());
+            return Response.ok(true, List.of());
+        });
+        table.command("MOUNT").onReference(ReferenceCommands::mount);
+        table.command("UNMOUNT").onReference(ReferenceCommands::unmount);
+        table.command("GET ALL REFS").global(c -> Response.ok(true, c.references().names()));
+        table.command("GET REF CLIENT").optional("reference name").global(c -> {
+            String name = c.hasArg(0) ? c.arg(0) : c.directive().referenceName();
+            String holder = c.references().get(name).mountedBy();
+            return Response.ok(true, holder.isEmpty() ? List.of() : List.of(holder));
+        });
+        for (String state : List.of("ON", "OFF")) {
+            boolean on = state.equals("ON");
+            table.command("LOG SCREEN " + state).global(c -> {
+                c.log().screen(on);
+                return Response.ok(true, List.of());
+            });
+        }
+        table.command("LOG FILE ON").args("path").global(c -> {
+            c.log().file(files(c).allowedPath(c.arg(0)));
+            return Response.ok(true, List.of());
+        });
+        table.command("LOG FILE OFF").global(c -> {
+            c.log().closeFile();
+            return Response.ok(true, List.of());
+        });
+        table.command("APPLY").manipulation(c -> {
+            c.reference().applyPending();
+            return c.ok();
+        });
+        table.command("REASON").manipulation(c -> {
+            c.reference().reason();
+            return c.ok();
+        });
+    }
+
+    private static OntologyFiles files(CommandContext c) {
+        return new OntologyFiles(c.config());
+    }
+
+    /**
+     * LOAD and CREATE share their last four arguments: ontology IRI, buffered manipulation,
+     * reasoner, buffered reasoner; {@code first} is the index before them (-1 for CREATE).
+     */
+    private static Response load(CommandContext c, int first, boolean mount, String source,
+                                 Function<String, OWLOntology> reader) {
+        String iriArgument = c.arg(first + 1).trim();
+        boolean bufferedManipulation = c.flag(first + 2);
+        String reasoner = ReasonerRegistry.canonicalName(c.arg(first + 3), c.config().defaultReasoner());
+        boolean bufferedReasoner = c.flag(first + 4);
+        String name = c.directive().referenceName();
+        String client = c.directive().clientName();
+        Reference reference = c.references().createOrReuse(name, source, () -> {
+            OWLOntology ontology = reader.apply(source);
+            String ontologyIri = !iriArgument.isEmpty() ? iriArgument
+                    : ontology.getOntologyID().getOntologyIRI().map(Object::toString).orElse("urn:armor:" + name);
+            String namespace = ontologyIri.endsWith("#") || ontologyIri.endsWith("/") ? ontologyIri : ontologyIri + "#";
+            EntityResolver names = new EntityResolver(ontology, namespace, declaredPrefixes(ontology));
+            return new Reference(name, source, ontology, names, reasoner, bufferedManipulation, bufferedReasoner,
+                    c.config().reasonerTimeoutMs());
+        });
+        if (mount) {
+            takeMount(reference, client);
+        }
+        return Response.ok(reference.isConsistent(), List.of());
+    }
+
+    private static Map<String, String> declaredPrefixes(OWLOntology ontology) {
+        OWLDocumentFormat format = ontology.getOWLOntologyManager().getOntologyFormat(ontology);
+        return EntityResolver.prefixesOf(format != null && format.isPrefixOWLDocumentFormat()
+                ? format.asPrefixOWLDocumentFormat().getPrefixName2PrefixMap() : Map.of());
+    }
+
+    private static Response save(CommandContext c, boolean withInferences) {
+        Reference reference = c.reference();
+        String pathArgument = c.hasArg(0) ? c.arg(0) : reference.source();
+        if (pathArgument == null || pathArgument.startsWith("http")) {
+            throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "reference '" + reference.name()
+                    + "' was not loaded from a file: SAVE needs a path");
+        }
+        OntologyFiles files = files(c);
+        Path target = files.allowedPath(pathArgument);
+        String format = c.hasArg(1) ? c.arg(1) : "";
+        if (withInferences) {
+            files.save(Inferences.withInferences(reference), target, format.isEmpty() ? "rdfxml" : format);
+        } else {
+            files.save(reference.ontology(), target, format);
+        }
+        return c.ok();
+    }
+
+    private static Response mount(CommandContext c) {
+        takeMount(c.reference(), c.directive().clientName());
+        return c.ok();
+    }
+
+    private static void takeMount(Reference reference, String client) {
+        String holder = reference.mountedBy();
+        if (!holder.isEmpty() && !holder.equals(client)) {
+            throw new ArmorException(ExitCode.MOUNT_REFUSED, "reference '" + reference.name()
+                    + "' is mounted by client '" + holder + "'");
+        }
+        reference.setMountedBy(client);
+    }
+
+    private static Response unmount(CommandContext c) {
+        String holder = c.reference().mountedBy();
+        String client = c.directive().clientName();
+        if (!holder.equals(client)) {
+            throw new ArmorException(ExitCode.MOUNT_REFUSED, holder.isEmpty()
+                    ? "reference '" + c.reference().name() + "' is not mounted"
+                    : "reference '" + c.reference().name() + "' is mounted by client '" + holder + "', not '"
+                    + client + "'");
+        }
+        c.reference().setMountedBy("");
+        return c.ok();
+    }
+}

@@ -1,0 +1,172 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.command;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.api.Response;
+import io.github.armor.core.api.Response.QueryItem;
+import io.github.armor.core.reference.Reference;
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
+import java.util.ArrayList;
+import java.util.List;
+import org.apache.jena.query.Query;
+import org.apache.jena.query.QueryCancelledException;
+import org.apache.jena.query.QueryExecution;
+import org.apache.jena.query.QueryExecutionFactory;
+import org.apache.jena.query.QueryFactory;
+import org.apache.jena.query.QueryParseException;
+import org.apache.jena.query.QuerySolution;
+import org.apache.jena.query.ResultSet;
+import org.apache.jena.rdf.model.Literal;
+import org.apache.jena.rdf.model.Model;
+import org.apache.jena.rdf.model.ModelFactory;
+import org.apache.jena.rdf.model.RDFNode;
+import org.apache.jena.shared.PrefixMapping;
+import org.semanticweb.owlapi.formats.NTriplesDocumentFormat;
+import org.semanticweb.owlapi.model.IRI;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.OWLOntologyStorageException;
+import org.semanticweb.owlapi.vocab.Namespaces;
+
+/**
+ * QUERY SPARQL with Apache Jena ARQ over the ontology plus its inferences (class and property
+ * assertions, hierarchy), so that answers agree with the other queries. The reference's
+ * declared prefixes are predefined in every query.
+ */
+final class Sparql {
+    private Sparql() {}
+
+    static Response answer(CommandContext c, boolean formatted) {
+        List<String> args = c.args();
+        long timeoutMs = 0;
+        List<String> parts = args;
+        if (args.size() == 2 || args.size() == 4) {
+            timeoutMs = timeout(args.get(args.size() - 1));
+            parts = args.subList(0, args.size() - 1);
+        } else if (args.size() != 1 && args.size() != 3) {
+            throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "QUERY SPARQL takes (query[, timeout ms]) or "
+                    + "(prefix, select, where[, timeout ms]), got " + args.size() + " arguments");
+        }
+        String text = parts.size() == 1 ? parts.get(0) : joinSplitForm(parts.get(0), parts.get(1), parts.get(2));
+        Query query = parse(c.reference(), text);
+        if (!query.isSelectType() && !query.isAskType()) {
+            throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "only SELECT and ASK queries are answered");
+        }
+        Model model = model(c.reference());
+        Rendering rendering = c.render();
+        List<List<QueryItem>> rows = new ArrayList<>();
+        boolean timedOut = false;
+        try (QueryExecution execution = QueryExecutionFactory.create(query, model)) {
+            if (timeoutMs > 0) {
+                execution.setTimeout(timeoutMs);
+            }
+            if (query.isAskType()) {
+                rows.add(List.of(new QueryItem("ASK", String.valueOf(execution.execAsk()))));
+            } else {
+                ResultSet results = execution.execSelect();
+                List<String> variables = results.getResultVars();
+                while (results.hasNext()) {
+                    QuerySolution solution = results.next();
+                    List<QueryItem> row = new ArrayList<>();
+                    for (String variable : variables) {
+                        RDFNode node = solution.get(variable);
+                        row.add(new QueryItem(variable, node == null ? "" : render(rendering, node)));
+                    }
+                    rows.add(row);
+                }
+            }
+        } catch (QueryCancelledException e) {
+            timedOut = true;
+        }
+        boolean consistent = c.reference().isConsistent();
+        if (formatted) {
+            List<QueryItem> items = new ArrayList<>();
+            for (List<QueryItem> row : rows) {
+                if (!items.isEmpty()) {
+                    items.add(new QueryItem("", ""));
+                }
+                items.addAll(row);
+            }
+            return Response.okSparql(consistent, items, timedOut);
+        }
+        List<String> lines = rows.stream().map(Sparql::rowText).toList();
+        return Response.ok(consistent, lines).withQueriedObjects(lines, timedOut);
+    }
+
+    /** One variable: its value alone; several: {@code name=value} pairs joined by "; ". */
+    private static String rowText(List<QueryItem> row) {
+        if (row.size() == 1) {
+            return row.get(0).value();
+        }
+        return String.join("; ", row.stream().map(i -> i.key() + "=" + i.value()).toList());
+    }
+
+    private static String joinSplitForm(String prefix, String select, String where) {
+        String body = where.trim();
+        if (body.regionMatches(true, 0, "WHERE", 0, 5)) {
+            return prefix + "\n" + select + "\n" + body;
+        }
+        return prefix + "\n" + select + "\nWHERE {\n" + (body.startsWith("{") ? body.substring(1, body.lastIndexOf('}'))
+                : body) + "\n}";
+    }
+
+    private static long timeout(String text) {
+        try {
+            long value = Long.parseLong(text.trim());
+            if (value >= 0) {
+                return value;
+            }
+        } catch (NumberFormatException e) {
+            // answered below
+        }
+        throw new ArmorException(ExitCode.BAD_DATA_TYPE, "SPARQL timeout must be a whole number of ms >= 0, got '"
+                + text + "'");
+    }
+
+    private static Query parse(Reference reference, String text) {
+        PrefixMapping prefixes = PrefixMapping.Factory.create();
+        reference.names().prefixes().forEach(prefixes::setNsPrefix);
+        prefixes.setNsPrefix("", reference.names().defaultNamespace());
+        Query query = new Query();
+        query.setPrefixMapping(prefixes);
+        try {
+            return QueryFactory.parse(query, text, null, org.apache.jena.query.Syntax.syntaxSPARQL_11);
+        } catch (QueryParseException e) {
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "malformed SPARQL: " + e.getMessage()
+                    .replaceAll("\\s+", " ").trim(), e);
+        }
+    }
+
+    private static Model model(Reference reference) {
+        OWLOntology inferred = Inferences.withInferences(reference);
+        ByteArrayOutputStream triples = new ByteArrayOutputStream();
+        try {
+            inferred.getOWLOntologyManager().saveOntology(inferred, new NTriplesDocumentFormat(), triples);
+        } catch (OWLOntologyStorageException e) {
+            throw new ArmorException(ExitCode.INTERNAL_ERROR, "could not prepare the SPARQL graph: " + e.getMessage(), e);
+        }
+        Model model = ModelFactory.createDefaultModel();
+        model.read(new ByteArrayInputStream(triples.toByteArray()), null, "N-TRIPLES");
+        return model;
+    }
+
+    private static String render(Rendering rendering, RDFNode node) {
+        if (node.isURIResource()) {
+            return rendering.iri(IRI.create(node.asResource().getURI()));
+        }
+        if (node.isLiteral()) {
+            Literal literal = node.asLiteral();
+            String quoted = "\"" + literal.getLexicalForm() + "\"";
+            if (!literal.getLanguage().isEmpty()) {
+                return quoted + "@" + literal.getLanguage();
+            }
+            String datatype = literal.getDatatypeURI();
+            if (datatype.startsWith(Namespaces.XSD.toString())) {
+                return quoted + "^^xsd:" + datatype.substring(Namespaces.XSD.toString().length());
+            }
+            return quoted + "^^<" + datatype + ">";
+        }
+        return "_:" + node.asResource().getId();
+    }
+}

@@ -1,0 +1,204 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.command;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.reference.Reference;
+import java.util.List;
+import java.util.Set;
+import java.util.regex.Pattern;
+import org.semanticweb.owlapi.apibinding.OWLManager;
+import org.semanticweb.owlapi.expression.OWLEntityChecker;
+import org.semanticweb.owlapi.io.OWLParserException;
+import org.semanticweb.owlapi.io.StringDocumentSource;
+import org.semanticweb.owlapi.manchestersyntax.renderer.ManchesterOWLSyntaxOWLObjectRendererImpl;
+import org.semanticweb.owlapi.model.EntityType;
+import org.semanticweb.owlapi.model.IRI;
+import org.semanticweb.owlapi.model.OWLAnnotationProperty;
+import org.semanticweb.owlapi.model.OWLAxiom;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLClassExpression;
+import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLDataProperty;
+import org.semanticweb.owlapi.model.OWLDatatype;
+import org.semanticweb.owlapi.model.OWLEntity;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.model.OWLObject;
+import org.semanticweb.owlapi.model.OWLObjectProperty;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.OWLOntologyCreationException;
+import org.semanticweb.owlapi.model.SWRLRule;
+import org.semanticweb.owlapi.model.parameters.Imports;
+import org.semanticweb.owlapi.util.OntologyAxiomPair;
+import org.semanticweb.owlapi.util.SimpleShortFormProvider;
+import org.semanticweb.owlapi.util.mansyntax.ManchesterOWLSyntaxParser;
+import org.semanticweb.owlapi.vocab.OWL2Datatype;
+
+/**
+ * Class expressions, axioms and SWRL rules written by clients, parsed with the OWL API's own
+ * Manchester and functional-syntax parsers; names follow the same rules as plain arguments.
+ */
+final class Syntax {
+    private static final Pattern FUNCTIONAL_AXIOM = Pattern.compile("^\\s*[A-Z][A-Za-z]*\\s*\\(.*", Pattern.DOTALL);
+
+    private Syntax() {}
+
+    static OWLClassExpression classExpression(Reference reference, String text) {
+        ManchesterOWLSyntaxParser parser = parser(reference, text);
+        return parse(text, parser::parseClassExpression);
+    }
+
+    /** One axiom in Manchester syntax ({@code Robot SubClassOf isIn exactly 1 Location}) or functional syntax. */
+    static OWLAxiom axiom(Reference reference, String text) {
+        if (FUNCTIONAL_AXIOM.matcher(text).matches()) {
+            return functionalAxiom(reference, text);
+        }
+        ManchesterOWLSyntaxParser parser = parser(reference, text);
+        return parse(text, parser::parseAxiom);
+    }
+
+    /** A SWRL rule ({@code Robot(?r), isIn(?r, ?l) -> Occupied(?l)}), labelled with its name. */
+    static SWRLRule rule(Reference reference, String name, String text) {
+        ManchesterOWLSyntaxParser parser = parser(reference, "Rule: " + text);
+        List<OntologyAxiomPair> parsed = parse(text, parser::parseRuleFrame);
+        if (parsed.size() != 1 || !(parsed.get(0).getAxiom() instanceof SWRLRule rule)) {
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "expected exactly one SWRL rule in '" + text + "'");
+        }
+        OWLDataFactory factory = reference.factory();
+        return factory.getSWRLRule(rule.body().toList(), rule.head().toList(),
+                Set.of(factory.getRDFSLabel(factory.getOWLLiteral(name))));
+    }
+
+    static String render(Reference reference, boolean fullIri, OWLObject object) {
+        ManchesterOWLSyntaxOWLObjectRendererImpl renderer = new ManchesterOWLSyntaxOWLObjectRendererImpl();
+        SimpleShortFormProvider shortForms = new SimpleShortFormProvider();
+        renderer.setShortFormProvider(entity -> fullIri ? "<" + entity.getIRI() + ">" : shortForms.getShortForm(entity));
+        return renderer.render(object).replaceAll("\\s+", " ").trim();
+    }
+
+    private static ManchesterOWLSyntaxParser parser(Reference reference, String text) {
+        ManchesterOWLSyntaxParser parser = OWLManager.createManchesterParser();
+        parser.setDefaultOntology(reference.ontology());
+        parser.setOWLEntityChecker(new ReferenceEntityChecker(reference));
+        parser.setStringToParse(text);
+        return parser;
+    }
+
+    private static <T> T parse(String text, java.util.function.Supplier<T> parse) {
+        try {
+            return parse.get();
+        } catch (OWLParserException e) {
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + text + "': "
+                    + e.getMessage().replaceAll("\\s+", " ").trim(), e);
+        }
+    }
+
+    private static OWLAxiom functionalAxiom(Reference reference, String text) {
+        StringBuilder document = new StringBuilder();
+        reference.names().prefixes().forEach((name, namespace) ->
+                document.append("Prefix(").append(name).append(":=<").append(namespace).append(">)\n"));
+        document.append("Prefix(:=<").append(reference.names().defaultNamespace()).append(">)\n");
+        document.append("Ontology(\n").append(text).append("\n)\n");
+        OWLOntology parsed;
+        try {
+            parsed = OWLManager.createOWLOntologyManager().loadOntologyFromOntologyDocument(
+                    new StringDocumentSource(document.toString(), "urn:armor:axiom",
+                            new org.semanticweb.owlapi.formats.FunctionalSyntaxDocumentFormat(), null));
+        } catch (OWLOntologyCreationException e) {
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse functional-syntax axiom '" + text + "': "
+                    + String.valueOf(e.getMessage()).replaceAll("\\s+", " ").trim(), e);
+        }
+        List<OWLAxiom> axioms = parsed.axioms().filter(a -> !a.isOfType(org.semanticweb.owlapi.model.AxiomType.DECLARATION))
+                .toList();
+        if (axioms.size() != 1) {
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "expected exactly one axiom in '" + text + "', found "
+                    + axioms.size());
+        }
+        return axioms.get(0);
+    }
+
+    /**
+     * Lets the Manchester parser see the reference's entities by the argument naming rules. A
+     * name that is no entity at all is taken as a new class (contract: naming creates); other
+     * kinds must exist, so that the parser can tell a property from a class.
+     */
+    private static final class ReferenceEntityChecker implements OWLEntityChecker {
+        private final Reference reference;
+        private final OWLOntology ontology;
+        private final OWLDataFactory factory;
+
+        ReferenceEntityChecker(Reference reference) {
+            this.reference = reference;
+            this.ontology = reference.ontology();
+            this.factory = reference.factory();
+        }
+
+        @Override
+        public OWLClass getOWLClass(String name) {
+            OWLClass existing = existing(EntityType.CLASS, name);
+            if (existing != null || isAnyEntity(name)) {
+                return existing;
+            }
+            IRI iri = iriOrNull(EntityType.CLASS, name);
+            return iri == null ? null : factory.getOWLClass(iri);
+        }
+
+        @Override
+        public OWLObjectProperty getOWLObjectProperty(String name) {
+            return existing(EntityType.OBJECT_PROPERTY, name);
+        }
+
+        @Override
+        public OWLDataProperty getOWLDataProperty(String name) {
+            return existing(EntityType.DATA_PROPERTY, name);
+        }
+
+        @Override
+        public OWLNamedIndividual getOWLIndividual(String name) {
+            return existing(EntityType.NAMED_INDIVIDUAL, name);
+        }
+
+        @Override
+        public OWLDatatype getOWLDatatype(String name) {
+            IRI iri = iriOrNull(EntityType.DATATYPE, name);
+            if (iri == null) {
+                IRI xsd = IRI.create("http://www.w3.org/2001/XMLSchema#" + name);
+                return OWL2Datatype.isBuiltIn(xsd) ? factory.getOWLDatatype(xsd) : null;
+            }
+            return OWL2Datatype.isBuiltIn(iri) || ontology.containsDatatypeInSignature(iri, Imports.INCLUDED)
+                    ? factory.getOWLDatatype(iri) : null;
+        }
+
+        @Override
+        public OWLAnnotationProperty getOWLAnnotationProperty(String name) {
+            return existing(EntityType.ANNOTATION_PROPERTY, name);
+        }
+
+        private <E extends OWLEntity> E existing(EntityType<E> type, String name) {
+            IRI iri = iriOrNull(type, name);
+            if (iri == null) {
+                return null;
+            }
+            E entity = factory.getOWLEntity(type, iri);
+            return ontology.containsEntityInSignature(entity, Imports.INCLUDED) || entity.isBuiltIn() ? entity : null;
+        }
+
+        private boolean isAnyEntity(String name) {
+            return existing(EntityType.OBJECT_PROPERTY, name) != null || existing(EntityType.DATA_PROPERTY, name) != null
+                    || existing(EntityType.NAMED_INDIVIDUAL, name) != null
+                    || existing(EntityType.ANNOTATION_PROPERTY, name) != null
+                    || existing(EntityType.DATATYPE, name) != null;
+        }
+
+        private IRI iriOrNull(EntityType<?> type, String name) {
+            try {
+                return reference.names().iri(type, name);
+            } catch (ArmorException e) {
+                if (e.exitCode() == ExitCode.AMBIGUOUS_NAME) {
+                    throw e;
+                }
+                return null;
+            }
+        }
+    }
+}

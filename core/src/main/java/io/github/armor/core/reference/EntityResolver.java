@@ -1,0 +1,149 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.reference;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import org.semanticweb.owlapi.model.EntityType;
+import org.semanticweb.owlapi.model.IRI;
+import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLEntity;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.parameters.Imports;
+
+/**
+ * Finds the entity an argument names (contract section 3): {@code <full IRI>}, a bare http(s) IRI,
+ * {@code prefix:Name} with the document's prefixes, or a plain name. A plain name takes the
+ * reference's default namespace, unless that entity does not exist and exactly one entity of the
+ * same kind ends in {@code #Name} or {@code /Name}: ontologies edited in Protégé often mix namespaces.
+ */
+public final class EntityResolver {
+    private static final Pattern PLAIN_NAME = Pattern.compile("[^\\s<>\"{}|^`\\\\]+");
+    private static final Pattern ABSOLUTE_IRI = Pattern.compile("[A-Za-z][A-Za-z0-9+.-]*:[^\\s<>\"{}|^`\\\\]*");
+
+    private final OWLOntology ontology;
+    private final OWLDataFactory factory;
+    private final String defaultNamespace;
+    private final Map<String, String> prefixes;
+
+    public EntityResolver(OWLOntology ontology, String defaultNamespace, Map<String, String> prefixes) {
+        this.ontology = ontology;
+        this.factory = ontology.getOWLOntologyManager().getOWLDataFactory();
+        this.defaultNamespace = defaultNamespace;
+        this.prefixes = Map.copyOf(prefixes);
+    }
+
+    public String defaultNamespace() {
+        return defaultNamespace;
+    }
+
+    /** Prefix name (without the colon) to namespace, as the ontology document declares them. */
+    public Map<String, String> prefixes() {
+        return prefixes;
+    }
+
+    public <E extends OWLEntity> E entity(EntityType<E> type, String argument) {
+        return factory.getOWLEntity(type, iri(type, argument));
+    }
+
+    /** The IRI an argument names for an entity of the given kind. */
+    public IRI iri(EntityType<?> type, String argument) {
+        String name = argument.trim();
+        if (name.isEmpty()) {
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "empty " + kind(type) + " name");
+        }
+        if (name.startsWith("<") || name.endsWith(">")) {
+            if (!(name.startsWith("<") && name.endsWith(">"))) {
+                throw new ArmorException(ExitCode.BAD_SYNTAX, "unbalanced angle brackets in IRI '" + name + "'");
+            }
+            return absoluteIri(name.substring(1, name.length() - 1), name);
+        }
+        if (name.startsWith("http://") || name.startsWith("https://")) {
+            return absoluteIri(name, name);
+        }
+        int colon = name.indexOf(':');
+        if (colon >= 0) {
+            String namespace = prefixes.get(name.substring(0, colon));
+            if (namespace == null) {
+                throw new ArmorException(ExitCode.BAD_SYNTAX, "unknown prefix '" + name.substring(0, colon)
+                        + ":' in '" + name + "'; declared prefixes: " + String.join(", ", prefixes.keySet()));
+            }
+            return absoluteIri(namespace + name.substring(colon + 1), name);
+        }
+        if (!PLAIN_NAME.matcher(name).matches()) {
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "'" + name + "' is not a valid " + kind(type) + " name");
+        }
+        IRI inDefault = IRI.create(defaultNamespace + name);
+        if (ontology.containsEntityInSignature(factory.getOWLEntity(type, inDefault), Imports.INCLUDED)) {
+            return inDefault;
+        }
+        List<IRI> elsewhere = entitiesOf(type)
+                .map(OWLEntity::getIRI)
+                .filter(iri -> iri.toString().endsWith("#" + name) || iri.toString().endsWith("/" + name))
+                .distinct().sorted().toList();
+        if (elsewhere.size() == 1) {
+            return elsewhere.get(0);
+        }
+        if (elsewhere.size() > 1) {
+            throw new ArmorException(ExitCode.AMBIGUOUS_NAME, "the " + kind(type) + " name '" + name
+                    + "' matches several entities: " + elsewhere.stream().map(i -> "<" + i + ">").toList()
+                    + "; write the full IRI or prefix:Name");
+        }
+        return inDefault;
+    }
+
+    private Stream<? extends OWLEntity> entitiesOf(EntityType<?> type) {
+        if (type == EntityType.CLASS) {
+            return ontology.classesInSignature(Imports.INCLUDED);
+        }
+        if (type == EntityType.NAMED_INDIVIDUAL) {
+            return ontology.individualsInSignature(Imports.INCLUDED);
+        }
+        if (type == EntityType.OBJECT_PROPERTY) {
+            return ontology.objectPropertiesInSignature(Imports.INCLUDED);
+        }
+        if (type == EntityType.DATA_PROPERTY) {
+            return ontology.dataPropertiesInSignature(Imports.INCLUDED);
+        }
+        if (type == EntityType.DATATYPE) {
+            return ontology.datatypesInSignature(Imports.INCLUDED);
+        }
+        return ontology.annotationPropertiesInSignature(Imports.INCLUDED);
+    }
+
+    private static IRI absoluteIri(String text, String argument) {
+        if (!ABSOLUTE_IRI.matcher(text).matches()) {
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "'" + argument + "' is not a valid absolute IRI");
+        }
+        return IRI.create(text);
+    }
+
+    static String kind(EntityType<?> type) {
+        if (type == EntityType.NAMED_INDIVIDUAL) {
+            return "individual";
+        }
+        if (type == EntityType.OBJECT_PROPERTY) {
+            return "object property";
+        }
+        if (type == EntityType.DATA_PROPERTY) {
+            return "data property";
+        }
+        return type.getPrintName().toLowerCase(java.util.Locale.ROOT);
+    }
+
+    /** Namespaces a document declares, keyed by prefix name without the trailing colon. */
+    public static Map<String, String> prefixesOf(Map<String, String> declared) {
+        Map<String, String> result = new TreeMap<>();
+        declared.forEach((name, namespace) -> result.put(name.endsWith(":")
+                ? name.substring(0, name.length() - 1) : name, namespace));
+        result.putIfAbsent("owl", "http://www.w3.org/2002/07/owl#");
+        result.putIfAbsent("rdf", "http://www.w3.org/1999/02/22-rdf-syntax-ns#");
+        result.putIfAbsent("rdfs", "http://www.w3.org/2000/01/rdf-schema#");
+        result.putIfAbsent("xsd", "http://www.w3.org/2001/XMLSchema#");
+        return result;
+    }
+}

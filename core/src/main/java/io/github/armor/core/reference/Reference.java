@@ -1,0 +1,300 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.reference;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Function;
+import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.OWLOntologyChange;
+import org.semanticweb.owlapi.model.OWLOntologyManager;
+import org.semanticweb.owlapi.reasoner.InconsistentOntologyException;
+import org.semanticweb.owlapi.reasoner.InferenceType;
+import org.semanticweb.owlapi.reasoner.OWLReasoner;
+import org.semanticweb.owlapi.reasoner.ReasonerInterruptedException;
+import org.semanticweb.owlapi.reasoner.SimpleConfiguration;
+import org.semanticweb.owlapi.reasoner.TimeOutException;
+
+/**
+ * One named ontology with its reasoner, as ARMOR calls it a reference.
+ *
+ * <p>Threading: OWL API ontologies and reasoners are not safe for concurrent use, so every
+ * directive on a reference runs under {@link #lock}; directives on different references run in
+ * parallel. Callers take the lock through {@link #locked} with a bounded wait.
+ *
+ * <p>Buffered manipulation queues changes until {@link #applyPending()}; a buffered reasoner sees
+ * applied changes only at {@link #reason()}. {@link #isConsistent()} is a cached value, refreshed
+ * whenever the reasoner is brought up to date, so reading it never costs a reasoning pass.
+ */
+public final class Reference {
+    private final String name;
+    private final String source;
+    private final OWLOntologyManager manager;
+    private final OWLOntology ontology;
+    private final EntityResolver resolver;
+    private final String reasonerName;
+    private final boolean bufferedManipulation;
+    private final boolean bufferedReasoner;
+    private final long reasonerTimeoutMs;
+    private final ReentrantLock lock = new ReentrantLock(true);
+
+    private final List<OWLOntologyChange> pending = new ArrayList<>();
+    private OWLReasoner reasoner;
+    private boolean consistent = true;
+    private String mountedBy = "";
+    private Transaction transaction;
+
+    public Reference(String name, String source, OWLOntology ontology, EntityResolver resolver, String reasonerName,
+                     boolean bufferedManipulation, boolean bufferedReasoner, long reasonerTimeoutMs) {
+        this.name = name;
+        this.source = source;
+        this.manager = ontology.getOWLOntologyManager();
+        this.ontology = ontology;
+        this.resolver = resolver;
+        this.reasonerName = reasonerName;
+        this.bufferedManipulation = bufferedManipulation;
+        this.bufferedReasoner = bufferedReasoner;
+        this.reasonerTimeoutMs = reasonerTimeoutMs;
+        this.reasoner = createReasoner();
+        refreshConsistency();
+    }
+
+    /** Runs {@code work} holding this reference, waiting at most {@code waitMs} for other directives. */
+    public <T> T locked(long waitMs, Function<Reference, T> work) {
+        boolean acquired;
+        try {
+            acquired = lock.tryLock(waitMs, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new ArmorException(ExitCode.TIMEOUT, "interrupted while waiting for reference '" + name + "'");
+        }
+        if (!acquired) {
+            throw new ArmorException(ExitCode.TIMEOUT, "reference '" + name + "' stayed busy for " + waitMs
+                    + " ms (another directive is using it)");
+        }
+        try {
+            return work.apply(this);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    public String name() {
+        return name;
+    }
+
+    public String source() {
+        return source;
+    }
+
+    public OWLOntology ontology() {
+        return ontology;
+    }
+
+    public OWLOntologyManager manager() {
+        return manager;
+    }
+
+    public OWLDataFactory factory() {
+        return manager.getOWLDataFactory();
+    }
+
+    public EntityResolver names() {
+        return resolver;
+    }
+
+    public String reasonerName() {
+        return reasonerName;
+    }
+
+    public boolean bufferedManipulation() {
+        return bufferedManipulation;
+    }
+
+    public boolean bufferedReasoner() {
+        return bufferedReasoner;
+    }
+
+    public boolean isConsistent() {
+        return consistent;
+    }
+
+    public String mountedBy() {
+        return mountedBy;
+    }
+
+    public void setMountedBy(String client) {
+        mountedBy = client == null ? "" : client;
+    }
+
+    /** Queues or applies ontology changes according to the buffering mode. */
+    public void change(List<? extends OWLOntologyChange> changes) {
+        if (changes.isEmpty()) {
+            return;
+        }
+        if (bufferedManipulation) {
+            pending.addAll(changes);
+            return;
+        }
+        enact(changes);
+    }
+
+    /** APPLY: the queued changes reach the ontology (and a non-buffered reasoner). */
+    public void applyPending() {
+        List<OWLOntologyChange> queued = List.copyOf(pending);
+        pending.clear();
+        enact(queued);
+    }
+
+    /** REASON: apply the queue, bring the reasoner up to date, recompute consistency and inferences. */
+    public void reason() {
+        applyPending();
+        guardReasoner(() -> {
+            reasoner.flush();
+            return null;
+        });
+        refreshConsistency();
+        if (consistent) {
+            precompute(InferenceType.CLASS_HIERARCHY);
+            precompute(InferenceType.CLASS_ASSERTIONS);
+        }
+    }
+
+    /**
+     * The reasoner for a query, with consistency checked first: reasoners answer nothing meaningful
+     * (or throw) on an inconsistent ontology.
+     */
+    public OWLReasoner reasonerForQuery() {
+        if (!consistent) {
+            throw new ArmorException(ExitCode.INCONSISTENT, "reference '" + name
+                    + "' is inconsistent; QUERY CONSISTENCY explains why");
+        }
+        return reasoner;
+    }
+
+    /** Runs a reasoner call, turning the reasoner's own failures into ARMOR codes. */
+    public <T> T guardReasoner(java.util.function.Supplier<T> call) {
+        try {
+            return call.get();
+        } catch (InconsistentOntologyException e) {
+            consistent = false;
+            throw new ArmorException(ExitCode.INCONSISTENT, "reference '" + name + "' is inconsistent", e);
+        } catch (TimeOutException | ReasonerInterruptedException e) {
+            throw new ArmorException(ExitCode.TIMEOUT, reasonerName + " exceeded its time limit of "
+                    + reasonerTimeoutMs + " ms on reference '" + name + "'", e);
+        } catch (UnsupportedOperationException e) {
+            throw new ArmorException(ExitCode.NOT_SUPPORTED, reasonerName + " does not support this: "
+                    + e.getMessage(), e);
+        } catch (ArmorException e) {
+            throw e;
+        } catch (RuntimeException e) {
+            throw new ArmorException(ExitCode.REASONER_FAILED, reasonerName + " failed on reference '" + name
+                    + "': " + e, e);
+        }
+    }
+
+    /** Releases the reasoner; the reference must not be used afterwards. */
+    public void dispose() {
+        reasoner.dispose();
+    }
+
+    /** Starts recording changes so that an atomic directive list can undo them. */
+    public void beginTransaction() {
+        if (transaction == null) {
+            transaction = new Transaction(List.copyOf(pending));
+        }
+    }
+
+    public void commitTransaction() {
+        transaction = null;
+    }
+
+    /** Undoes everything since {@link #beginTransaction()}: enacted changes and the queue. */
+    public void rollbackTransaction() {
+        Transaction undo = transaction;
+        transaction = null;
+        if (undo == null) {
+            return;
+        }
+        List<OWLOntologyChange> reversed = new ArrayList<>();
+        for (int i = undo.enacted.size() - 1; i >= 0; i--) {
+            reversed.add(undo.enacted.get(i).reverseChange());
+        }
+        manager.applyChanges(reversed);
+        pending.clear();
+        pending.addAll(undo.pendingBefore);
+        if (!bufferedReasoner && !reversed.isEmpty()) {
+            synchroniseReasoner();
+        }
+    }
+
+    private void enact(List<? extends OWLOntologyChange> changes) {
+        if (changes.isEmpty()) {
+            return;
+        }
+        List<OWLOntologyChange> enacted = new ArrayList<>(manager.applyChangesAndGetDetails(changes).getEnactedChanges());
+        if (transaction != null) {
+            transaction.enacted.addAll(enacted);
+        }
+        if (!bufferedReasoner && !enacted.isEmpty()) {
+            synchroniseReasoner();
+        }
+    }
+
+    private void synchroniseReasoner() {
+        guardReasoner(() -> {
+            reasoner.flush();
+            return null;
+        });
+        refreshConsistency();
+    }
+
+    private void refreshConsistency() {
+        try {
+            consistent = reasoner.isConsistent();
+        } catch (TimeOutException | ReasonerInterruptedException e) {
+            throw new ArmorException(ExitCode.TIMEOUT, reasonerName + " exceeded its time limit of "
+                    + reasonerTimeoutMs + " ms checking consistency of '" + name + "'", e);
+        } catch (RuntimeException e) {
+            // An unsupported construct makes some reasoners fail on isConsistent; other
+            // directives on the reference must stay usable, so only the answer says so.
+            throw new ArmorException(ExitCode.REASONER_FAILED, reasonerName + " could not check consistency of '"
+                    + name + "': " + e, e);
+        }
+    }
+
+    private void precompute(InferenceType type) {
+        guardReasoner(() -> {
+            if (reasoner.getPrecomputableInferenceTypes().contains(type)) {
+                reasoner.precomputeInferences(type);
+            }
+            return null;
+        });
+    }
+
+    private OWLReasoner createReasoner() {
+        SimpleConfiguration configuration = reasonerTimeoutMs > 0
+                ? new SimpleConfiguration(reasonerTimeoutMs) : new SimpleConfiguration();
+        try {
+            return ReasonerRegistry.factory(reasonerName).createReasoner(ontology, configuration);
+        } catch (ArmorException e) {
+            throw e;
+        } catch (RuntimeException | LinkageError e) {
+            throw new ArmorException(ExitCode.REASONER_FAILED, reasonerName + " could not start on reference '"
+                    + name + "': " + e, e);
+        }
+    }
+
+    private static final class Transaction {
+        final List<OWLOntologyChange> pendingBefore;
+        final List<OWLOntologyChange> enacted = new ArrayList<>();
+
+        Transaction(List<OWLOntologyChange> pendingBefore) {
+            this.pendingBefore = pendingBefore;
+        }
+    }
+}

@@ -1,0 +1,54 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.reference;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Supplier;
+
+/** The loaded references by name. Lookups are lock-free; creations are serialised. */
+public final class ReferenceRegistry {
+    private final ConcurrentHashMap<String, Reference> references = new ConcurrentHashMap<>();
+
+    public Reference get(String name) {
+        Reference reference = references.get(name);
+        if (reference == null) {
+            throw new ArmorException(ExitCode.UNKNOWN_REFERENCE, "no reference named '" + name
+                    + "' is loaded; loaded: " + names());
+        }
+        return reference;
+    }
+
+    public Optional<Reference> find(String name) {
+        return Optional.ofNullable(references.get(name));
+    }
+
+    /**
+     * The reference under {@code name}, created by {@code creation} if there is none. An existing
+     * reference is reused only when it came from the same source (ARMOR's rule for LOAD).
+     */
+    public synchronized Reference createOrReuse(String name, String source, Supplier<Reference> creation) {
+        Reference existing = references.get(name);
+        if (existing != null) {
+            if (source != null && source.equals(existing.source())) {
+                return existing;
+            }
+            throw new ArmorException(ExitCode.REFERENCE_EXISTS, "reference '" + name + "' is already loaded from "
+                    + (existing.source() == null ? "CREATE" : "'" + existing.source() + "'") + "; DROP it first");
+        }
+        Reference created = creation.get();
+        references.put(name, created);
+        return created;
+    }
+
+    public void remove(Reference reference) {
+        references.remove(reference.name(), reference);
+        reference.dispose();
+    }
+
+    public List<String> names() {
+        return references.keySet().stream().sorted().toList();
+    }
+}

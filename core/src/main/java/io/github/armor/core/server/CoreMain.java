@@ -1,0 +1,59 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.server;
+
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import io.github.armor.core.ArmorCore;
+import io.github.armor.core.api.CoreConfig;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Starts the core process: {@code java -jar armor-core.jar SOCKET_PATH CONFIG_JSON}. Prints one
+ * "ready" line on stdout once the socket accepts connections, and exits when stdin closes, so
+ * the core never outlives the node that started it.
+ */
+public final class CoreMain {
+    private CoreMain() {}
+
+    public static void main(String[] args) throws IOException {
+        if (args.length != 2) {
+            System.err.println("usage: java -jar armor-core.jar SOCKET_PATH CONFIG_JSON");
+            System.exit(2);
+        }
+        CoreConfig config = config(JsonParser.parseString(args[1]).getAsJsonObject());
+        Thread watchParent = new Thread(() -> {
+            try {
+                while (System.in.read() >= 0) {
+                    // the node never writes; reading only detects that it has gone
+                }
+            } catch (IOException e) {
+                // treated as the node having gone
+            }
+            Runtime.getRuntime().halt(0);
+        }, "armor-parent-watch");
+        watchParent.setDaemon(true);
+        watchParent.start();
+        new CoreServer(new ArmorCore(config)).serve(Path.of(args[0]), () -> {
+            System.out.println("ARMOR core ready on " + args[0]);
+            System.out.flush();
+        });
+    }
+
+    static CoreConfig config(JsonObject json) {
+        List<Path> dirs = new ArrayList<>();
+        JsonArray allowed = json.has("allowed_dirs") ? json.getAsJsonArray("allowed_dirs") : new JsonArray();
+        allowed.forEach(d -> dirs.add(Path.of(d.getAsString())));
+        return new CoreConfig(
+                !json.has("full_entity_iri") || json.get("full_entity_iri").getAsBoolean(),
+                json.has("default_reasoner") ? json.get("default_reasoner").getAsString() : "HERMIT",
+                dirs,
+                json.has("web_loading") && json.get("web_loading").getAsBoolean(),
+                json.has("lock_wait_ms") ? json.get("lock_wait_ms").getAsLong() : 30_000,
+                json.has("reasoner_timeout_ms") ? json.get("reasoner_timeout_ms").getAsLong() : 0,
+                json.has("mount_lease_s") ? json.get("mount_lease_s").getAsLong() : 0);
+    }
+}

@@ -1,0 +1,140 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.server;
+
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import io.github.armor.core.ArmorCore;
+import java.io.EOFException;
+import java.io.IOException;
+import java.net.StandardProtocolFamily;
+import java.net.UnixDomainSocketAddress;
+import java.nio.ByteBuffer;
+import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ThreadFactory;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Serves {@link ArmorCore} on a Unix domain socket. Frames are a 4-byte big-endian length and a
+ * UTF-8 JSON object. A request carries an {@code id} the response repeats, so one connection
+ * carries many requests at once: each runs on its own worker thread and answers when done.
+ *
+ * <p>Requests: {@code {"id", "op": "directive", "directive": {...}}},
+ * {@code {"id", "op": "list", "directives": [...]}}, {@code {"id", "op": "ping"}}.
+ */
+public final class CoreServer {
+    private static final Logger LOG = LoggerFactory.getLogger(CoreServer.class);
+    private static final int MAX_FRAME_BYTES = 256 << 20;
+    // Reasoners recurse deeply on real ontologies; a large stack turns many overflows into answers.
+    private static final long WORKER_STACK_BYTES = 256L << 20;
+
+    private final ArmorCore core;
+    private final ExecutorService workers = Executors.newCachedThreadPool(new WorkerThreads());
+
+    public CoreServer(ArmorCore core) {
+        this.core = core;
+    }
+
+    /** Binds the socket, then calls {@code onReady} and serves until the process ends. */
+    public void serve(Path socketPath, Runnable onReady) throws IOException {
+        Files.deleteIfExists(socketPath);
+        try (ServerSocketChannel server = ServerSocketChannel.open(StandardProtocolFamily.UNIX)) {
+            server.bind(UnixDomainSocketAddress.of(socketPath));
+            onReady.run();
+            while (true) {
+                SocketChannel connection = server.accept();
+                Thread reader = new Thread(() -> serveConnection(connection), "armor-connection");
+                reader.setDaemon(true);
+                reader.start();
+            }
+        }
+    }
+
+    private void serveConnection(SocketChannel connection) {
+        Object writeLock = new Object();
+        try (connection) {
+            while (true) {
+                JsonObject request = JsonParser.parseString(readFrame(connection)).getAsJsonObject();
+                workers.execute(() -> {
+                    JsonObject reply = answer(request);
+                    try {
+                        synchronized (writeLock) {
+                            writeFrame(connection, reply.toString());
+                        }
+                    } catch (IOException e) {
+                        LOG.warn("could not send a reply: {}", e.toString());
+                    }
+                });
+            }
+        } catch (EOFException e) {
+            LOG.debug("client disconnected");
+        } catch (IOException | RuntimeException e) {
+            LOG.warn("connection closed: {}", e.toString());
+        }
+    }
+
+    private JsonObject answer(JsonObject request) {
+        JsonObject reply = new JsonObject();
+        reply.add("id", request.get("id"));
+        String op = request.has("op") ? request.get("op").getAsString() : "";
+        try {
+            switch (op) {
+                case "directive" -> reply.add("response",
+                        WireCodec.response(core.execute(WireCodec.directive(request.getAsJsonObject("directive")))));
+                case "list" -> reply.add("list",
+                        WireCodec.listResponse(core.executeList(WireCodec.directives(request.getAsJsonArray("directives")))));
+                case "ping" -> reply.addProperty("pong", true);
+                default -> reply.addProperty("error", "unknown op '" + op + "'");
+            }
+        } catch (RuntimeException e) {
+            LOG.error("malformed request", e);
+            reply.addProperty("error", "malformed request: " + e);
+        }
+        return reply;
+    }
+
+    private static String readFrame(SocketChannel channel) throws IOException {
+        ByteBuffer header = readFully(channel, 4);
+        int length = header.getInt();
+        if (length < 0 || length > MAX_FRAME_BYTES) {
+            throw new IOException("frame length " + length + " out of range");
+        }
+        return StandardCharsets.UTF_8.decode(readFully(channel, length)).toString();
+    }
+
+    private static ByteBuffer readFully(SocketChannel channel, int length) throws IOException {
+        ByteBuffer buffer = ByteBuffer.allocate(length);
+        while (buffer.hasRemaining()) {
+            if (channel.read(buffer) < 0) {
+                throw new EOFException();
+            }
+        }
+        return buffer.flip();
+    }
+
+    private static void writeFrame(SocketChannel channel, String json) throws IOException {
+        byte[] payload = json.getBytes(StandardCharsets.UTF_8);
+        ByteBuffer frame = ByteBuffer.allocate(4 + payload.length).putInt(payload.length).put(payload).flip();
+        while (frame.hasRemaining()) {
+            channel.write(frame);
+        }
+    }
+
+    private static final class WorkerThreads implements ThreadFactory {
+        private final AtomicInteger count = new AtomicInteger();
+
+        @Override
+        public Thread newThread(Runnable work) {
+            Thread thread = new Thread(null, work, "armor-worker-" + count.incrementAndGet(), WORKER_STACK_BYTES);
+            thread.setDaemon(true);
+            return thread;
+        }
+    }
+}
