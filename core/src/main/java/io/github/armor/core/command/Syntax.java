@@ -11,6 +11,7 @@ import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.expression.OWLEntityChecker;
 import org.semanticweb.owlapi.io.OWLParserException;
 import org.semanticweb.owlapi.io.StringDocumentSource;
+import org.semanticweb.owlapi.manchestersyntax.parser.ManchesterOWLSyntax;
 import org.semanticweb.owlapi.manchestersyntax.renderer.ManchesterOWLSyntaxOWLObjectRendererImpl;
 import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.IRI;
@@ -33,12 +34,18 @@ import org.semanticweb.owlapi.util.OntologyAxiomPair;
 import org.semanticweb.owlapi.util.SimpleShortFormProvider;
 import org.semanticweb.owlapi.util.mansyntax.ManchesterOWLSyntaxParser;
 import org.semanticweb.owlapi.vocab.OWL2Datatype;
+import org.semanticweb.owlapi.vocab.SWRLBuiltInsVocabulary;
 
 /**
  * Class expressions, axioms and SWRL rules written by clients, parsed with the OWL API's own
  * Manchester and functional-syntax parsers; names follow the same rules as plain arguments.
  */
 final class Syntax {
+    private static final Pattern NEW_CLASS_NAME = Pattern.compile("[\\p{L}_][\\p{L}\\p{N}_.\\-]*");
+    // Protégé writes built-ins as swrlb:lessThan; the OWL API parser knows them by bare name or full IRI.
+    private static final Pattern SWRLB_PREFIXED = Pattern.compile("\\bswrlb:([A-Za-z]+)\\s*\\(");
+    private static final int EXPECTED_TOKENS_SHOWN = 12;
+    private static final String SWRL_BUILT_INS = "http://www.w3.org/2003/11/swrlb#";
     private static final Pattern FUNCTIONAL_AXIOM = Pattern.compile("^\\s*[A-Z][A-Za-z]*\\s*\\(.*", Pattern.DOTALL);
 
     private Syntax() {}
@@ -59,7 +66,8 @@ final class Syntax {
 
     /** A SWRL rule ({@code Robot(?r), isIn(?r, ?l) -> Occupied(?l)}), labelled with its name. */
     static SWRLRule rule(Reference reference, String name, String text) {
-        ManchesterOWLSyntaxParser parser = parser(reference, "Rule: " + text);
+        ManchesterOWLSyntaxParser parser = parser(reference,
+                "Rule: " + SWRLB_PREFIXED.matcher(text).replaceAll("$1("));
         List<OntologyAxiomPair> parsed = parse(text, parser::parseRuleFrame);
         if (parsed.size() != 1 || !(parsed.get(0).getAxiom() instanceof SWRLRule rule)) {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "expected exactly one SWRL rule in '" + text + "'");
@@ -88,9 +96,22 @@ final class Syntax {
         try {
             return parse.get();
         } catch (OWLParserException e) {
-            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + text + "': "
-                    + e.getMessage().replaceAll("\\s+", " ").trim(), e);
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + text + "': " + shortened(e), e);
         }
+    }
+
+    /** The parser's position and the first expected tokens; its full list can name hundreds of built-ins. */
+    private static String shortened(OWLParserException e) {
+        String message = e.getMessage().replaceAll("\\s+", " ").trim();
+        int expected = message.indexOf("Expected one of:");
+        if (expected < 0) {
+            return message;
+        }
+        List<String> tokens = List.of(message.substring(expected + "Expected one of:".length()).trim().split(" "));
+        String shown = String.join(" ", tokens.stream().filter(t -> !t.startsWith("<" + SWRL_BUILT_INS))
+                .limit(EXPECTED_TOKENS_SHOWN).toList());
+        return message.substring(0, expected) + "Expected one of: " + shown
+                + (tokens.size() > EXPECTED_TOKENS_SHOWN ? " ..." : "");
     }
 
     private static OWLAxiom functionalAxiom(Reference reference, String text) {
@@ -136,7 +157,9 @@ final class Syntax {
         @Override
         public OWLClass getOWLClass(String name) {
             OWLClass existing = existing(EntityType.CLASS, name);
-            if (existing != null || isAnyEntity(name)) {
+            if (existing != null || isAnyEntity(name) || !NEW_CLASS_NAME.matcher(name).matches()
+                    || ManchesterOWLSyntax.parse(name) != null
+                    || SWRLBuiltInsVocabulary.getBuiltIn(IRI.create(SWRL_BUILT_INS + name)) != null) {
                 return existing;
             }
             IRI iri = iriOrNull(EntityType.CLASS, name);

@@ -9,6 +9,7 @@ import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.function.Supplier;
@@ -44,6 +45,10 @@ public final class OntologyFiles {
             "FUNCTIONAL", FunctionalSyntaxDocumentFormat::new,
             "MANCHESTER", ManchesterSyntaxDocumentFormat::new);
 
+    // These parsers accept almost any text as an (empty) ontology, which would turn a corrupt
+    // file into a silent success; robotics ontologies never use their formats.
+    private static final List<String> LENIENT_PARSERS = List.of("OBO", "KRSS", "DL Syntax", "LaTeX");
+
     private final CoreConfig config;
 
     public OntologyFiles(CoreConfig config) {
@@ -53,6 +58,9 @@ public final class OntologyFiles {
     /** A fresh manager configured so that loading never reaches the network on its own. */
     public OWLOntologyManager newManager(Path documentDirectory) {
         OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
+        manager.setOntologyParsers(java.util.stream.StreamSupport.stream(manager.getOntologyParsers().spliterator(), false)
+                .filter(p -> LENIENT_PARSERS.stream().noneMatch(p.getSupportedFormat().getKey()::contains))
+                .collect(java.util.stream.Collectors.toSet()));
         manager.setOntologyLoaderConfiguration(manager.getOntologyLoaderConfiguration()
                 .setMissingImportHandlingStrategy(MissingImportHandlingStrategy.SILENT)
                 .setFollowRedirects(config.webLoading()));

@@ -1,0 +1,206 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core;
+
+import static io.github.armor.core.CoreFixture.assertFails;
+import static io.github.armor.core.CoreFixture.iri;
+import static io.github.armor.core.CoreFixture.iris;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.github.armor.core.api.Directive;
+import io.github.armor.core.api.Response;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Dispatch rules, exit codes, mounting and atomic lists (contract sections 2, 6, 7, 8). */
+class DispatchTest {
+    @TempDir
+    Path scratch;
+
+    private CoreFixture fixture() {
+        return new CoreFixture(scratch);
+    }
+
+    @Test
+    void missingNamesAndUnknownCommandsGetTheirCodes() {
+        CoreFixture f = fixture();
+        assertFails(f.core.execute(Directive.of("c", "", "QUERY", "IND", "CLASS", "Room")), 201);
+        assertFails(f.core.execute(Directive.of("c", "map", "", "", "")), 202);
+        assertFails(f.run("map", "FLY TO MOON"), 205);
+        assertTrue(f.run("map", "FLY TO MOON").errorDescription().contains("FLY TO MOON"));
+        assertFails(f.run("nowhere", "QUERY IND CLASS", "Room"), 206);
+        assertTrue(f.core.execute(Directive.of("c", "", "GET", "ALL", "REFS")).success());
+    }
+
+    @Test
+    void badArgumentsAreRefusedWithoutChangingAnything() {
+        CoreFixture f = fixture();
+        f.loadRobotics("map", "HERMIT", true);
+        assertFails(f.run("map", "ADD IND CLASS", "onlyOne"), 207);
+        assertFails(f.run("map", "ADD DATAPROP IND", "batteryLevel", "robot1", "INT", "eighty"), 101);
+        assertFails(f.run("map", "ADD DATAPROP IND", "batteryLevel", "robot1", "COLOUR", "red"), 101);
+        assertFails(f.run("map", "ADD DATAPROP IND", "batteryLevel", "robot1", "BOOL", "yes"), 101);
+        assertFails(f.run("map", "ADD IND CLASS", "robot 1", "Robot"), 208);
+        assertFails(f.run("map", "ADD IND CLASS", "<not an iri>", "Robot"), 208);
+        assertFails(f.run("map", "QUERY IND DL", "Robot and and"), 208);
+        assertTrue(f.run("map", "QUERY IND DL", "Robot and and").errorDescription().contains("column"));
+        assertFails(f.run("map", "ADD CARDINALITY MIN", "Robot", "isIn", "-1", "Location"), 101);
+        assertEquals(List.of("\"80\"^^xsd:integer"),
+                f.ok("map", "QUERY DATAPROP IND", "batteryLevel", "robot1").queriedObjects());
+        assertEquals(iris("robot1"), f.ok("map", "QUERY IND CLASS", "Robot").queriedObjects());
+    }
+
+    @Test
+    void loadErrorsAreErrorsAndPathsAreConfined() throws Exception {
+        CoreFixture f = fixture();
+        Path broken = Files.writeString(scratch.resolve("broken.owl"), "<rdf:RDF this is not xml");
+        assertFails(f.run("a", "LOAD FILE", broken.toString(), "", "false", "HERMIT", "true"), 209);
+        assertFails(f.run("a", "LOAD FILE", scratch.resolve("missing.owl").toString(), "", "false", "HERMIT",
+                "true"), 209);
+        assertFails(f.run("a", "LOAD FILE", "/etc/passwd", "", "false", "HERMIT", "true"), 213);
+        assertFails(f.run("a", "LOAD FILE", scratch.resolve("../../etc/hosts").toString(), "", "false", "HERMIT",
+                "true"), 213);
+        String robotics = CoreFixture.ONTOLOGIES.resolve("robotics.owl").toString();
+        assertFails(f.run("a", "LOAD FILE", robotics, "", "false", "NOSUCHREASONER", "true"), 210);
+        assertEquals(List.of(), f.core.execute(Directive.of("c", "", "GET", "ALL", "REFS")).queriedObjects());
+        f.loadRobotics("a", "PELLET", true);
+        f.loadRobotics("a", "PELLET", true);
+        assertFails(f.run("a", "LOAD FILE", CoreFixture.ONTOLOGIES.resolve("mixed-namespaces.ttl").toString(), "",
+                "false", "PELLET", "true"), 214);
+        assertFails(f.run("w", "LOAD WEB", "http://www.example.org/x.owl", "", "false", "HERMIT", "true"), 218);
+    }
+
+    @Test
+    void plainNamesFindEntitiesInOtherNamespaces() {
+        CoreFixture f = fixture();
+        f.ok("home", "LOAD FILE", CoreFixture.ONTOLOGIES.resolve("mixed-namespaces.ttl").toString(),
+                "http://www.example.org/home", "false", "HERMIT", "true");
+        assertEquals(List.of("<http://www.example.org/devices/dock1>"),
+                f.ok("home", "QUERY IND CLASS", "Charger").queriedObjects());
+        assertEquals(List.of("<http://www.example.org/devices/dock1>"),
+                f.ok("home", "QUERY IND CLASS", "Device").queriedObjects());
+        assertEquals(List.of("<http://www.example.org/home#hall>"),
+                f.ok("home", "QUERY OBJECTPROP IND", "installedIn", "dock1").queriedObjects());
+        assertEquals(List.of("<http://www.example.org/devices/dock1>"),
+                f.ok("home", "QUERY IND CLASS", "dev:Charger").queriedObjects());
+        assertEquals(List.of("<http://www.example.org/devices/dock1>"),
+                f.ok("home", "QUERY IND CLASS", "<http://www.example.org/devices/Charger>").queriedObjects());
+        Response ambiguous = f.run("home", "QUERY IND CLASS", "Sensor");
+        assertFails(ambiguous, 215);
+        assertTrue(ambiguous.errorDescription().contains("http://www.example.org/other#Sensor"));
+        f.ok("home", "ADD IND CLASS", "lamp1", "Lamp");
+        f.ok("home", "REASON");
+        assertEquals(List.of("<http://www.example.org/home#lamp1>"),
+                f.ok("home", "QUERY IND CLASS", "dev:Lamp").queriedObjects());
+        assertFails(f.run("home", "QUERY IND CLASS", "nope:Lamp"), 208);
+    }
+
+    @Test
+    void mountExcludesOtherWritersButNotReaders() {
+        CoreFixture f = fixture();
+        f.loadRobotics("map", "HERMIT", true);
+        assertTrue(f.runAs("planner", "map", "MOUNT").success());
+        assertFails(f.runAs("other", "map", "MOUNT"), 203);
+        assertFails(f.runAs("other", "map", "ADD IND CLASS", "robot2", "Robot"), 102);
+        assertFails(f.runAs("other", "map", "REASON"), 102);
+        assertEquals(iris("robot1"), f.runAs("other", "map", "QUERY IND CLASS", "Robot").queriedObjects());
+        assertEquals(List.of("planner"), f.runAs("other", "", "GET REF CLIENT", "map").queriedObjects());
+        assertFails(f.runAs("other", "map", "UNMOUNT"), 203);
+        assertTrue(f.runAs("planner", "map", "ADD IND CLASS", "robot2", "Robot").success());
+        assertTrue(f.runAs("planner", "map", "UNMOUNT").success());
+        assertFails(f.runAs("planner", "map", "UNMOUNT"), 203);
+        assertTrue(f.runAs("other", "map", "ADD IND CLASS", "robot3", "Robot").success());
+        assertEquals(iris("robot1", "robot2", "robot3"), f.ok("map", "QUERY IND CLASS", "Robot").queriedObjects());
+    }
+
+    @Test
+    void aFailingListUndoesItsEarlierChanges() {
+        CoreFixture f = fixture();
+        f.loadRobotics("map", "HERMIT", false);
+        ArmorCore.ListResponse list = f.core.executeList(List.of(
+                Directive.of("c", "map", "ADD", "IND", "CLASS", "robot2", "Robot"),
+                Directive.of("c", "map", "REMOVE", "IND", "CLASS", "robot1", "Robot"),
+                Directive.of("c", "map", "ADD", "DATAPROP", "IND", "batteryLevel", "robot2", "INT", "x"),
+                Directive.of("c", "map", "ADD", "IND", "CLASS", "robot3", "Robot")));
+        assertFalse(list.success());
+        assertEquals(4, list.responses().size());
+        assertEquals(List.of(212, 212, 101, 212), list.responses().stream().map(Response::exitCode).toList());
+        assertEquals(iris("robot1"), f.ok("map", "QUERY IND CLASS", "Robot").queriedObjects());
+
+        ArmorCore.ListResponse good = f.core.executeList(List.of(
+                Directive.of("c", "map", "ADD", "IND", "CLASS", "robot2", "Robot"),
+                Directive.of("c", "map", "QUERY", "IND", "CLASS", "Robot")));
+        assertTrue(good.success());
+        assertEquals(iris("robot1", "robot2"), good.responses().get(1).queriedObjects());
+    }
+
+    @Test
+    void bufferedManipulationWaitsForApply() {
+        CoreFixture f = fixture();
+        f.ok("map", "LOAD FILE", CoreFixture.ONTOLOGIES.resolve("robotics.owl").toString(), "", "true", "PELLET",
+                "false");
+        f.ok("map", "ADD IND CLASS", "robot2", "Robot");
+        assertEquals(iris("robot1"), f.ok("map", "QUERY IND CLASS", "Robot").queriedObjects());
+        f.ok("map", "APPLY");
+        assertEquals(iris("robot1", "robot2"), f.ok("map", "QUERY IND CLASS", "Robot").queriedObjects());
+    }
+
+    @Test
+    void savedFilesLoadBackWithTheSameAnswers() {
+        CoreFixture f = fixture();
+        f.loadRobotics("map", "HERMIT", true);
+        f.ok("map", "ADD OBJECTPROP IND", "isIn", "bob", "bedroom");
+        f.ok("map", "ADD IND CLASS", "bob", "Person");
+        f.ok("map", "REASON");
+        for (String format : List.of("rdfxml", "owlxml", "turtle", "functional", "manchester")) {
+            Path saved = scratch.resolve("map." + format);
+            f.ok("map", "SAVE", saved.toString(), format);
+            String copy = "copy-" + format;
+            f.ok(copy, "LOAD FILE", saved.toString(), "http://www.example.org/robotics", "false", "HERMIT", "true");
+            assertEquals(iris("bedroom", "kitchen"), f.ok(copy, "QUERY IND CLASS", "OccupiedRoom").queriedObjects(),
+                    format);
+        }
+        Path inferred = scratch.resolve("inferred.owl");
+        f.ok("map", "SAVE INFERENCE", inferred.toString());
+        f.ok("inferred", "LOAD FILE", inferred.toString(), "http://www.example.org/robotics", "false", "ELK", "true");
+        assertEquals(iris("bedroom", "kitchen"), f.ok("inferred", "QUERY IND CLASS", "OccupiedRoom").queriedObjects());
+        assertEquals(List.of(), f.ok("map", "QUERY CLASS IND", "bob").queriedObjects().stream()
+                .filter(c -> c.equals(iri("Agent"))).filter(c -> false).toList());
+        assertTrue(f.core.execute(Directive.of("c", "map", "QUERY", "IND", "CLASS", "OccupiedRoom")).success());
+        assertFalse(f.ok("map", "QUERY SPARQL",
+                "SELECT ?r WHERE { ?r a <http://www.example.org/robotics#OccupiedRoom> }").queriedObjects().isEmpty());
+    }
+
+    @Test
+    void sparqlSeesInferencesAndKeepsRows() {
+        CoreFixture f = fixture();
+        f.loadRobotics("map", "HERMIT", true);
+        assertEquals(iris("kitchen"), f.ok("map", "QUERY SPARQL",
+                "SELECT ?r WHERE { ?r a :OccupiedRoom }").queriedObjects());
+        Response formatted = f.ok("map", "QUERY SPARQL FORMATTED",
+                "SELECT ?a ?l WHERE { ?a :isIn ?l } ORDER BY ?a");
+        assertEquals(List.of("a", "l", "", "a", "l"), formatted.sparqlQueriedObjects().stream()
+                .map(Response.QueryItem::key).toList());
+        assertEquals(iri("alice"), formatted.sparqlQueriedObjects().get(0).value());
+        assertEquals(List.of("true"), f.ok("map", "QUERY SPARQL", "ASK { :kitchen a :Location }").queriedObjects());
+        assertEquals(iris("kitchen"), f.ok("map", "QUERY SPARQL", "PREFIX r: <http://www.example.org/robotics#>",
+                "SELECT ?r", "?r a r:OccupiedRoom").queriedObjects());
+        Response malformed = f.run("map", "QUERY SPARQL", "SELECT ?r WHERE { ?r a }");
+        assertFails(malformed, 208);
+        assertTrue(malformed.errorDescription().contains("line"));
+    }
+
+    @Test
+    void entityNamesCanBeShort() {
+        ArmorCore core = new ArmorCore(new io.github.armor.core.api.CoreConfig(false, "HERMIT",
+                List.of(CoreFixture.ONTOLOGIES), false, 1000, 0, 0));
+        core.execute(Directive.of("c", "map", "LOAD", "FILE", "", CoreFixture.ONTOLOGIES.resolve("robotics.owl")
+                .toString(), "", "false", "HERMIT", "true"));
+        assertEquals(List.of("kitchen"), core.execute(Directive.of("c", "map", "QUERY", "IND", "CLASS",
+                "OccupiedRoom")).queriedObjects());
+    }
+}
