@@ -12,15 +12,17 @@ import java.util.List;
 
 /** A core over the repository's test ontologies, with short helpers for directives. */
 final class CoreFixture {
-    static final Path ONTOLOGIES = Path.of("..", "tests", "ontologies").toAbsolutePath().normalize();
+    static final Path ONTOLOGIES = Path.of("..", "ontologies").toAbsolutePath().normalize();
+    static final Path TEST_ONTOLOGIES = Path.of("..", "tests", "ontologies").toAbsolutePath().normalize();
     static final String NS = "http://www.example.org/robotics#";
 
     final ArmorCore core;
 
     CoreFixture(Path... extraDirs) {
-        Path[] dirs = new Path[extraDirs.length + 1];
+        Path[] dirs = new Path[extraDirs.length + 2];
         dirs[0] = ONTOLOGIES;
-        System.arraycopy(extraDirs, 0, dirs, 1, extraDirs.length);
+        dirs[1] = TEST_ONTOLOGIES;
+        System.arraycopy(extraDirs, 0, dirs, 2, extraDirs.length);
         core = new ArmorCore(CoreConfig.defaults(dirs));
     }
 

@@ -69,7 +69,7 @@ class DispatchTest {
         assertEquals(List.of(), f.core.execute(Directive.of("c", "", "GET", "ALL", "REFS")).queriedObjects());
         f.loadRobotics("a", "PELLET", true);
         f.loadRobotics("a", "PELLET", true);
-        assertFails(f.run("a", "LOAD FILE", CoreFixture.ONTOLOGIES.resolve("mixed-namespaces.ttl").toString(), "",
+        assertFails(f.run("a", "LOAD FILE", CoreFixture.TEST_ONTOLOGIES.resolve("mixed-namespaces.ttl").toString(), "",
                 "false", "PELLET", "true"), 214);
         assertFails(f.run("w", "LOAD WEB", "http://www.example.org/x.owl", "", "false", "HERMIT", "true"), 218);
     }
@@ -77,7 +77,7 @@ class DispatchTest {
     @Test
     void plainNamesFindEntitiesInOtherNamespaces() {
         CoreFixture f = fixture();
-        f.ok("home", "LOAD FILE", CoreFixture.ONTOLOGIES.resolve("mixed-namespaces.ttl").toString(),
+        f.ok("home", "LOAD FILE", CoreFixture.TEST_ONTOLOGIES.resolve("mixed-namespaces.ttl").toString(),
                 "http://www.example.org/home", "false", "HERMIT", "true");
         assertEquals(List.of("<http://www.example.org/devices/dock1>"),
                 f.ok("home", "QUERY IND CLASS", "Charger").queriedObjects());

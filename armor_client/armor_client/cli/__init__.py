@@ -1,0 +1,48 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""The ``armor`` command: one verb per module, each with add_arguments() and run()."""
+
+import argparse
+import importlib
+import signal
+import sys
+
+VERBS = ('serve', 'call')
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog='armor', description='ARMOR for ROS 2: OWL ontologies with reasoners, as a ROS 2 '
+        'service. Run "armor VERB --help" for the details of a verb.')
+    verbs = parser.add_subparsers(dest='verb', metavar='VERB', required=True)
+    for name in VERBS:
+        module = importlib.import_module(f'armor_client.cli.{name}')
+        summary = module.__doc__.strip().splitlines()[0]
+        sub = verbs.add_parser(name, help=summary, description=module.__doc__.strip(),
+                               formatter_class=argparse.RawDescriptionHelpFormatter)
+        module.add_arguments(sub)
+        sub.set_defaults(run=module.run)
+    return parser
+
+
+def main(argv=None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    # After a lone "--" come directive arguments, after "--ros-args" ROS arguments: either may
+    # start with "-", so they bypass argparse.
+    trailing = []
+    marker = {'call': '--', 'serve': '--ros-args'}.get(argv[0] if argv else '')
+    if marker in argv:
+        split = argv.index(marker)
+        argv, trailing = argv[:split], argv[split + (marker == '--'):]
+    args = build_parser().parse_args(argv)
+    args.directive_args = trailing
+    try:
+        return args.run(args)
+    except KeyboardInterrupt:
+        return 128 + signal.SIGINT
+    except RuntimeError as error:
+        print(f'armor {args.verb}: {error}', file=sys.stderr)
+        return 2
+
+
+if __name__ == '__main__':
+    sys.exit(main())

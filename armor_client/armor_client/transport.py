@@ -1,0 +1,109 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""Calls the two ARMOR services from any Python program.
+
+The transport either owns a node (spun on a background thread, so calls may come from any
+thread) or uses a node the caller already spins. Every wait has a deadline.
+"""
+
+import itertools
+import os
+import threading
+from typing import Optional, Sequence
+
+from armor_client.errors import ArmorServiceInternalError
+from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
+from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
+import rclpy
+from rclpy.executors import MultiThreadedExecutor
+from rclpy.node import Node
+
+DIRECTIVE_SERVICE = 'armor_interface_srv'
+LIST_SERVICE = 'armor_interface_serialized_srv'
+
+_node_numbers = itertools.count()
+
+
+def directive(client: str, reference: str, command: str, primary: str = '',
+              secondary: str = '', args: Sequence[str] = ()) -> ArmorDirectiveReq:
+    """Build an ArmorDirectiveReq; every argument is sent as a string."""
+    return ArmorDirectiveReq(client_name=client, reference_name=reference, command=command,
+                             primary_command_spec=primary, secondary_command_spec=secondary,
+                             args=[str(a) for a in args])
+
+
+class ArmorTransport:
+    """The two ARMOR service clients behind one object.
+
+    Args:
+        node: a node the caller spins; None to create and spin one here.
+        namespace: namespace of the ARMOR node ('' for the caller's own).
+        service_wait_s: how long the first call waits for the services to appear.
+    """
+
+    def __init__(self, node: Optional[Node] = None, namespace: str = '',
+                 service_wait_s: float = 30.0):
+        self._owns_node = node is None
+        self._owns_context = False
+        if self._owns_node:
+            if not rclpy.ok():
+                rclpy.init()
+                self._owns_context = True
+            node = rclpy.create_node(f'armor_client_{os.getpid()}_{next(_node_numbers)}')
+            self._executor = MultiThreadedExecutor(num_threads=2)
+            self._executor.add_node(node)
+            self._spinner = threading.Thread(target=self._executor.spin, daemon=True,
+                                             name='armor-client-spin')
+            self._spinner.start()
+        self.node = node
+        prefix = namespace.rstrip('/') + '/' if namespace else ''
+        self._directive = node.create_client(ArmorDirective, prefix + DIRECTIVE_SERVICE)
+        self._list = node.create_client(ArmorDirectiveList, prefix + LIST_SERVICE)
+        self._service_wait_s = service_wait_s
+        self._ready = False
+
+    def call(self, request: ArmorDirectiveReq,
+             timeout_s: Optional[float] = None) -> ArmorDirectiveRes:
+        """Send one directive and return ARMOR's response (failed directives included)."""
+        message = ArmorDirective.Request(armor_request=request)
+        return self._call(self._directive, message, timeout_s).armor_response
+
+    def call_list(self, requests: Sequence[ArmorDirectiveReq],
+                  timeout_s: Optional[float] = None) -> ArmorDirectiveList.Response:
+        """Send an atomic list of directives through armor_interface_serialized_srv."""
+        message = ArmorDirectiveList.Request(armor_requests=list(requests))
+        return self._call(self._list, message, timeout_s)
+
+    def close(self) -> None:
+        self.node.destroy_client(self._directive)
+        self.node.destroy_client(self._list)
+        if self._owns_node:
+            self._executor.shutdown()
+            self._spinner.join()
+            self.node.destroy_node()
+        if self._owns_context:
+            rclpy.try_shutdown()
+
+    def __enter__(self) -> 'ArmorTransport':
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def _call(self, client, message, timeout_s):
+        if not self._ready:
+            if not client.wait_for_service(timeout_sec=self._service_wait_s):
+                raise ArmorServiceInternalError(
+                    f'service {client.srv_name} not available after {self._service_wait_s:.0f} s;'
+                    ' is the ARMOR node running (armor serve)?')
+            self._ready = True
+        done = threading.Event()
+        future = client.call_async(message)
+        future.add_done_callback(lambda _: done.set())
+        if not done.wait(timeout_s):
+            client.remove_pending_request(future)
+            raise ArmorServiceInternalError(f'no answer from {client.srv_name} within '
+                                            f'{timeout_s} s')
+        if future.exception() is not None:
+            raise ArmorServiceInternalError(f'call to {client.srv_name} failed: '
+                                            f'{future.exception()}')
+        return future.result()

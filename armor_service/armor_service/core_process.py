@@ -1,0 +1,237 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""Owns the Java knowledge core: starts it, talks to it, notices its death, starts it again.
+
+Reasoners hang, overflow their stack or exhaust memory on real ontologies. Running them in a
+child process means the node survives all three: requests in flight when the core dies fail
+with CORE_UNAVAILABLE, and a new core is started in the background.
+"""
+
+import concurrent.futures
+import itertools
+import json
+import logging
+import os
+import shutil
+import socket
+import subprocess
+import tempfile
+import threading
+import time
+from typing import Callable, Optional
+
+from armor_service import wire
+
+# Exit code the core reserves for "knowledge core restarting or unreachable" (ExitCode.java).
+CORE_UNAVAILABLE = 216
+
+_READY_PREFIX = 'ARMOR core ready on '
+
+
+class CoreUnavailable(Exception):
+    """The core died, is restarting, or could not be reached in time."""
+
+
+class CoreProcess:
+    """A supervised core process reached over a Unix domain socket.
+
+    One connection carries all requests: each has an id, the core answers each on its own
+    thread, and a reader thread hands every answer to the caller waiting for that id. Safe to
+    call from many threads at once.
+    """
+
+    def __init__(self, jar: str, config: dict, *, java: str = 'java',
+                 jvm_options: tuple = (), start_timeout_s: float = 120.0,
+                 restart_wait_s: float = 60.0,
+                 logger: Optional[logging.Logger] = None,
+                 on_restart: Optional[Callable[[], None]] = None):
+        self._command = [java, *jvm_options, '-jar', jar]
+        self._config = json.dumps(config)
+        self._start_timeout_s = start_timeout_s
+        self._restart_wait_s = restart_wait_s
+        self._log = logger or logging.getLogger('armor_core')
+        self._on_restart = on_restart
+        self._ids = itertools.count(1)
+        self._state = threading.Condition()
+        self._send_lock = threading.Lock()
+        self._pending: dict = {}
+        self._process: Optional[subprocess.Popen] = None
+        self._socket: Optional[socket.socket] = None
+        self._generation = 0
+        self._available = False
+        self._stopping = False
+        self._restarts = 0
+        self._socket_dir = tempfile.mkdtemp(prefix='armor-core-')
+
+    @property
+    def pid(self) -> Optional[int]:
+        process = self._process
+        return process.pid if process else None
+
+    @property
+    def restarts(self) -> int:
+        return self._restarts
+
+    def start(self) -> None:
+        """Start the core and connect; raises CoreUnavailable if it does not come up."""
+        with self._state:
+            self._generation += 1
+            generation = self._generation
+        socket_path = os.path.join(self._socket_dir, f'core-{generation}.sock')
+        # A session of its own: Ctrl-C in the node's terminal must not kill the core behind
+        # the node's back. The core exits by itself when its stdin (this pipe) closes.
+        process = subprocess.Popen(
+            [*self._command, socket_path, self._config], stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
+        threading.Thread(target=self._forward_stderr, args=(process,), daemon=True,
+                         name='armor-core-stderr').start()
+        try:
+            self._wait_until_ready(process)
+            connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+            connection.connect(socket_path)
+        except Exception as error:
+            process.kill()
+            process.wait()
+            raise CoreUnavailable(f'the knowledge core did not start: {error}') from error
+        with self._state:
+            self._process = process
+            self._socket = connection
+            self._available = True
+            self._state.notify_all()
+        threading.Thread(target=self._read_replies, args=(connection, generation), daemon=True,
+                         name='armor-core-reader').start()
+        threading.Thread(target=self._watch_exit, args=(process, generation), daemon=True,
+                         name='armor-core-watch').start()
+        self._log.info(f'knowledge core {process.pid} ready on {socket_path}')
+
+    def request(self, payload: dict, timeout_s: Optional[float] = None) -> dict:
+        """Send one request and wait for its reply (forever when timeout_s is None)."""
+        with self._state:
+            if not self._state.wait_for(lambda: self._available or self._stopping,
+                                        timeout=self._restart_wait_s):
+                raise CoreUnavailable(
+                    f'the knowledge core is restarting and was not back within '
+                    f'{self._restart_wait_s:.0f} s')
+            if self._stopping:
+                raise CoreUnavailable('the node is shutting down')
+            request_id = next(self._ids)
+            future: concurrent.futures.Future = concurrent.futures.Future()
+            self._pending[request_id] = future
+            connection = self._socket
+            generation = self._generation
+        try:
+            with self._send_lock:
+                wire.send_frame(connection, {'id': request_id, **payload})
+        except OSError as error:
+            self._core_lost(generation, f'sending to the core failed: {error}')
+        try:
+            reply = future.result(timeout=timeout_s)
+        except concurrent.futures.TimeoutError:
+            with self._state:
+                self._pending.pop(request_id, None)
+            raise
+        if 'error' in reply:
+            raise CoreUnavailable(f'the core refused the request: {reply["error"]}')
+        return reply
+
+    def kill(self) -> None:
+        """SIGKILL the current core (the supervisor then restarts it); for tests and tools."""
+        process = self._process
+        if process and process.poll() is None:
+            process.kill()
+
+    def stop(self) -> None:
+        """Stop supervising and end the core."""
+        with self._state:
+            self._stopping = True
+            self._available = False
+            process, connection = self._process, self._socket
+            self._fail_pending('the node is shutting down')
+            self._state.notify_all()
+        if connection:
+            connection.close()
+        if process and process.poll() is None:
+            process.stdin.close()
+            try:
+                process.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
+        shutil.rmtree(self._socket_dir, ignore_errors=True)
+
+    def _wait_until_ready(self, process: subprocess.Popen) -> None:
+        deadline = time.monotonic() + self._start_timeout_s
+        ready = threading.Event()
+        failure = []
+
+        def read_stdout():
+            for raw in process.stdout:
+                line = raw.decode('utf-8', 'replace').rstrip()
+                if line.startswith(_READY_PREFIX):
+                    ready.set()
+                elif line:
+                    self._log.info(f'core: {line}')
+            failure.append(f'exited with code {process.wait()}')
+            ready.set()
+
+        threading.Thread(target=read_stdout, daemon=True, name='armor-core-stdout').start()
+        if not ready.wait(max(0.0, deadline - time.monotonic())):
+            raise TimeoutError(f'no ready line within {self._start_timeout_s:.0f} s')
+        if failure and process.poll() is not None:
+            raise RuntimeError(failure[0])
+
+    def _forward_stderr(self, process: subprocess.Popen) -> None:
+        for raw in process.stderr:
+            line = raw.decode('utf-8', 'replace').rstrip()
+            if line:
+                self._log.warning(f'core: {line}')
+
+    def _read_replies(self, connection: socket.socket, generation: int) -> None:
+        try:
+            while True:
+                reply = wire.receive_frame(connection)
+                with self._state:
+                    future = self._pending.pop(reply.get('id'), None)
+                if future is not None:
+                    future.set_result(reply)
+        except (OSError, ConnectionError, ValueError) as error:
+            self._core_lost(generation, f'connection to the core lost ({error})')
+
+    def _watch_exit(self, process: subprocess.Popen, generation: int) -> None:
+        code = process.wait()
+        self._core_lost(generation, f'the knowledge core exited with code {code}')
+
+    def _core_lost(self, generation: int, reason: str) -> None:
+        with self._state:
+            if generation != self._generation or not self._available:
+                return
+            self._available = False
+            self._fail_pending(reason)
+            process, connection = self._process, self._socket
+            stopping = self._stopping
+        if connection:
+            connection.close()
+        if process and process.poll() is None:
+            process.kill()
+        if not stopping:
+            self._log.error(f'{reason}; starting a new core')
+            threading.Thread(target=self._restart, daemon=True, name='armor-core-restart').start()
+
+    def _restart(self) -> None:
+        delay_s = 0.5
+        while not self._stopping:
+            try:
+                self.start()
+                self._restarts += 1
+                if self._on_restart:
+                    self._on_restart()
+                return
+            except CoreUnavailable as error:
+                self._log.error(f'{error}; retrying in {delay_s:.1f} s')
+                time.sleep(delay_s)
+                delay_s = min(delay_s * 2, 10.0)
+
+    def _fail_pending(self, reason: str) -> None:
+        """Answer every waiting request with the failure; the caller holds self._state."""
+        pending, self._pending = self._pending, {}
+        for future in pending.values():
+            future.set_exception(CoreUnavailable(reason))

@@ -1,0 +1,181 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""ArmorService: the ROS 2 face of the knowledge core.
+
+The node translates between armor_msgs and the core's frames and supervises the core
+process; it holds no ontology logic. Run it with ``armor serve`` (ROS arguments pass
+through, e.g. ``armor serve --ros-args -p default_reasoner:=PELLET -r __ns:=/robot1``).
+"""
+
+import concurrent.futures
+import os
+import sys
+import tempfile
+
+from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
+from armor_service import wire
+from armor_service.core_process import CORE_UNAVAILABLE, CoreProcess, CoreUnavailable
+import rclpy
+from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
+from rclpy.node import Node
+from rcl_interfaces.msg import ParameterDescriptor
+
+# Exit code the core reserves for "time limit reached" (ExitCode.java).
+TIMEOUT = 211
+
+# Settings handed to the core at start; the names are the core's configuration keys.
+_CORE_SETTINGS = ('full_entity_iri', 'default_reasoner', 'allowed_dirs', 'web_loading',
+                  'lock_wait_ms', 'reasoner_timeout_ms', 'mount_lease_s')
+
+
+class ArmorService(Node):
+    """Serves armor_interface_srv and armor_interface_serialized_srv."""
+
+    def __init__(self):
+        super().__init__('armor_service')
+        self._declare_parameters()
+        self._core = CoreProcess(
+            self._core_jar(), {name: self._value(name) for name in _CORE_SETTINGS},
+            jvm_options=tuple(self._value('jvm_options')), logger=self.get_logger(),
+            on_restart=self._preload)
+        self._core.start()
+        self._preload()
+        # Each callback blocks until the core answers. A reentrant group on a multi-threaded
+        # executor lets a slow REASON on one reference wait while queries on others (and on
+        # the same one, which the core serialises per reference) are answered meanwhile.
+        group = ReentrantCallbackGroup()
+        self.create_service(ArmorDirective, 'armor_interface_srv', self.directive_callback,
+                            callback_group=group)
+        self.create_service(ArmorDirectiveList, 'armor_interface_serialized_srv',
+                            self.directive_list_callback, callback_group=group)
+        self.get_logger().info(
+            f'ARMOR ready: services {self.resolve_service_name("armor_interface_srv")} and '
+            f'{self.resolve_service_name("armor_interface_serialized_srv")}; core pid '
+            f'{self._core.pid}. Try: armor call {self._value("preload_reference") or "REF"} '
+            'QUERY IND CLASS -- Room')
+
+    @property
+    def core(self) -> CoreProcess:
+        return self._core
+
+    def directive_callback(self, request, response):
+        payload = {'op': 'directive', 'directive': wire.directive_to_json(request.armor_request)}
+        try:
+            reply = self._core.request(payload, self._request_timeout())
+            response.armor_response = wire.response_from_json(reply['response'])
+        except CoreUnavailable as error:
+            response.armor_response = wire.error_response(CORE_UNAVAILABLE, str(error))
+        except concurrent.futures.TimeoutError:
+            response.armor_response = self._timed_out()
+        return response
+
+    def directive_list_callback(self, request, response):
+        directives = [wire.directive_to_json(r) for r in request.armor_requests]
+        try:
+            reply = self._core.request({'op': 'list', 'directives': directives},
+                                       self._request_timeout())['list']
+            response.success = reply['success']
+            response.is_consistent = reply['is_consistent']
+            response.armor_responses = [wire.response_from_json(r)
+                                        for r in reply['armor_responses']]
+        except CoreUnavailable as error:
+            response.success = False
+            response.armor_responses = [wire.error_response(CORE_UNAVAILABLE, str(error))
+                                        for _ in directives]
+        except concurrent.futures.TimeoutError:
+            response.success = False
+            response.armor_responses = [self._timed_out() for _ in directives]
+        return response
+
+    def shutdown_core(self) -> None:
+        self._core.stop()
+
+    def _timed_out(self):
+        answer = wire.error_response(
+            TIMEOUT, f'no answer from the core within request_timeout_s='
+            f'{self._value("request_timeout_s")}; the directive may still complete')
+        answer.timeout = True
+        return answer
+
+    def _request_timeout(self):
+        seconds = self._value('request_timeout_s')
+        return seconds if seconds > 0 else None
+
+    def _preload(self) -> None:
+        path = self._value('preload_file')
+        if not path:
+            return
+        directive = {
+            'client_name': 'armor_service', 'reference_name': self._value('preload_reference'),
+            'command': 'LOAD', 'primary_command_spec': 'FILE', 'secondary_command_spec': '',
+            'args': [os.path.abspath(path), self._value('preload_iri'),
+                     str(self._value('preload_buffered_manipulation')).lower(),
+                     self._value('preload_reasoner'),
+                     str(self._value('preload_buffered_reasoner')).lower()]}
+        reply = self._core.request({'op': 'directive', 'directive': directive})['response']
+        if not reply['success']:
+            raise RuntimeError(f'preloading {path} failed: {reply["exit_code"]} '
+                               f'{reply["error_description"]}')
+        self.get_logger().info(f'preloaded {path} as reference '
+                               f'"{self._value("preload_reference")}"')
+
+    def _core_jar(self) -> str:
+        jar = self._value('core_jar') or os.environ.get('ARMOR_CORE_JAR', '')
+        if not jar or not os.path.isfile(jar):
+            raise RuntimeError(
+                f'knowledge core jar not found ({jar or "unset"}): set the core_jar parameter '
+                'or source install/setup.bash, which exports ARMOR_CORE_JAR')
+        return jar
+
+    def _value(self, name):
+        return self.get_parameter(name).value
+
+    def _declare_parameters(self) -> None:
+        home = os.path.expanduser('~')
+        defaults = {
+            'default_reasoner': ('HERMIT', 'reasoner used when LOAD or CREATE names none'),
+            'full_entity_iri': (True, 'answer <full IRIs> (true) or short names (false)'),
+            'allowed_dirs': ([os.getcwd(), home, tempfile.gettempdir()],
+                             'LOAD FILE, SAVE and LOG FILE paths must lie inside these'),
+            'web_loading': (False, 'allow LOAD WEB and owl:imports from the web'),
+            'lock_wait_ms': (30000, 'longest wait for a reference another directive is using'),
+            'reasoner_timeout_ms': (0, 'time limit handed to the reasoners (0 = none)'),
+            'mount_lease_s': (0, 'release a mount whose holder sent nothing for this long'),
+            'request_timeout_s': (0.0, 'longest wait for the core per request (0 = none)'),
+            'core_jar': ('', 'path of armor-core.jar (default: $ARMOR_CORE_JAR)'),
+            'jvm_options': (['-Xmx4g', '-XX:+ExitOnOutOfMemoryError'],
+                            'options for the core JVM; out of memory restarts the core'),
+            'executor_threads': (16, 'directives answered at once'),
+            'preload_file': ('', 'ontology loaded at start (and after a core restart)'),
+            'preload_reference': ('default', 'reference name of the preloaded ontology'),
+            'preload_iri': ('', 'ontology IRI for plain names (empty: the file\'s own)'),
+            'preload_reasoner': ('', 'reasoner of the preloaded ontology (empty: default)'),
+            'preload_buffered_manipulation': (False, 'buffer changes until APPLY'),
+            'preload_buffered_reasoner': (False, 'reasoner sees changes only at REASON'),
+        }
+        for name, (default, description) in defaults.items():
+            self.declare_parameter(name, default, ParameterDescriptor(description=description))
+
+
+def main(args=None):
+    rclpy.init(args=args)
+    node = None
+    try:
+        node = ArmorService()
+        executor = MultiThreadedExecutor(num_threads=node.get_parameter('executor_threads').value)
+        executor.add_node(node)
+        executor.spin()
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    except (RuntimeError, CoreUnavailable) as error:
+        print(f'armor_service: {error}', file=sys.stderr)
+        sys.exit(1)
+    finally:
+        if node is not None:
+            node.shutdown_core()
+            node.destroy_node()
+        rclpy.try_shutdown()
+
+
+if __name__ == '__main__':
+    main()

@@ -1,0 +1,70 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""The framed protocol between the node and the Java core.
+
+A frame is a 4-byte big-endian length followed by that many bytes of UTF-8 JSON. Directives
+and responses are JSON objects whose keys are the armor_msgs field names, so converting
+between a ROS message and a frame is a field-by-field copy with no knowledge of commands.
+"""
+
+import json
+import socket
+import struct
+
+from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes, QueryItem
+
+_HEADER = struct.Struct('>I')
+MAX_FRAME_BYTES = 256 << 20
+
+_REQUEST_FIELDS = ('client_name', 'reference_name', 'command', 'primary_command_spec',
+                   'secondary_command_spec')
+
+
+def send_frame(sock: socket.socket, payload: dict) -> None:
+    data = json.dumps(payload, ensure_ascii=False).encode('utf-8')
+    sock.sendall(_HEADER.pack(len(data)) + data)
+
+
+def receive_frame(sock: socket.socket) -> dict:
+    (length,) = _HEADER.unpack(_receive_exactly(sock, _HEADER.size))
+    if length > MAX_FRAME_BYTES:
+        raise ConnectionError(f'frame of {length} bytes exceeds the limit')
+    return json.loads(_receive_exactly(sock, length).decode('utf-8'))
+
+
+def _receive_exactly(sock: socket.socket, count: int) -> bytes:
+    chunks = []
+    while count:
+        chunk = sock.recv(min(count, 1 << 20))
+        if not chunk:
+            raise ConnectionError('the core closed the connection')
+        chunks.append(chunk)
+        count -= len(chunk)
+    return b''.join(chunks)
+
+
+def directive_to_json(request: ArmorDirectiveReq) -> dict:
+    fields = {name: getattr(request, name) for name in _REQUEST_FIELDS}
+    fields['args'] = list(request.args)
+    return fields
+
+
+def response_from_json(fields: dict) -> ArmorDirectiveRes:
+    response = ArmorDirectiveRes()
+    response.success = bool(fields['success'])
+    response.timeout = bool(fields['timeout'])
+    response.exit_code = int(fields['exit_code'])
+    response.error_description = fields['error_description']
+    response.is_consistent = bool(fields['is_consistent'])
+    response.queried_objects = list(fields['queried_objects'])
+    response.sparql_queried_objects = [QueryItem(key=item['key'], value=item['value'])
+                                       for item in fields['sparql_queried_objects']]
+    return response
+
+
+def error_response(exit_code: int, description: str) -> ArmorDirectiveRes:
+    """A response for failures the node detects itself (the core is unreachable)."""
+    response = ArmorDirectiveRes()
+    response.success = False
+    response.exit_code = exit_code
+    response.error_description = description
+    return response
