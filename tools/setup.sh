@@ -160,17 +160,22 @@ else
 fi
 
 # ---------------------------------------------------------------- 4. Python packages
+# editable_mode=compat: a .pth entry for <pkg>/ instead of setuptools' import-hook finder.
+# With the finder, running Python from the repo root imports the outer folder armor_client/
+# (no __init__.py) as a namespace package; a real path entry wins over it.
+PY_LOGIC=2
 for pkg in armor_service armor_client; do
   if [ ! -f "$pkg/setup.py" ]; then
     echo "$pkg: skipped (no $pkg/setup.py yet)"
     continue
   fi
-  py_hash="$(hash_str "$venv_hash" "$ROOT" "$(hash_of "$pkg/setup.py" "$pkg/setup.cfg" "$pkg/package.xml")")"
+  py_hash="$(hash_str "$PY_LOGIC" "$venv_hash" "$ROOT" "$(hash_of "$pkg/setup.py" "$pkg/setup.cfg" "$pkg/package.xml")")"
   if up_to_date "$pkg" "$py_hash"; then
     echo "$pkg: up to date"
   else
     t0=$(now); unstamp "$pkg"; : > "$LOGS/$pkg.log"
-    run_logged "$pkg" "$VENV/bin/python" -m pip install --no-deps --no-build-isolation -e "$pkg"
+    run_logged "$pkg" "$VENV/bin/python" -m pip install --no-deps --no-build-isolation \
+      --config-settings editable_mode=compat -e "$pkg"
     # Editable wheels leave out setup.py's data_files (ament index marker, package.xml, ...):
     # symlink them into the venv prefix, as colcon's --symlink-install would.
     run_logged "$pkg" "$VENV/bin/python" - "$pkg" "$STAMPS/$pkg.data" <<'EOF'
