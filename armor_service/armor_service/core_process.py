@@ -43,13 +43,18 @@ class CoreProcess:
                  jvm_options: tuple = (), start_timeout_s: float = 120.0,
                  restart_wait_s: float = 60.0,
                  logger: Optional[logging.Logger] = None,
-                 on_restart: Optional[Callable[[], None]] = None):
+                 on_ready: Optional[Callable[[Callable[[dict], dict]], None]] = None):
+        """Configure; nothing starts before start().
+
+        on_ready(send) runs after every start, before any caller's request reaches the new
+        core: it restores state through send(payload) -> reply.
+        """
         self._command = [java, *jvm_options, '-jar', jar]
         self._config = json.dumps(config)
         self._start_timeout_s = start_timeout_s
         self._restart_wait_s = restart_wait_s
         self._log = logger or logging.getLogger('armor_core')
-        self._on_restart = on_restart
+        self._on_ready = on_ready
         self._ids = itertools.count(1)
         self._state = threading.Condition()
         self._send_lock = threading.Lock()
@@ -57,19 +62,16 @@ class CoreProcess:
         self._process: Optional[subprocess.Popen] = None
         self._socket: Optional[socket.socket] = None
         self._generation = 0
+        self._lost = 0
+        self._restarting = False
         self._available = False
         self._stopping = False
-        self._restarts = 0
         self._socket_dir = tempfile.mkdtemp(prefix='armor-core-')
 
     @property
     def pid(self) -> Optional[int]:
         process = self._process
         return process.pid if process else None
-
-    @property
-    def restarts(self) -> int:
-        return self._restarts
 
     def start(self) -> None:
         """Start the core and connect; raises CoreUnavailable if it does not come up."""
@@ -95,12 +97,23 @@ class CoreProcess:
         with self._state:
             self._process = process
             self._socket = connection
-            self._available = True
-            self._state.notify_all()
         threading.Thread(target=self._read_replies, args=(connection, generation), daemon=True,
                          name='armor-core-reader').start()
         threading.Thread(target=self._watch_exit, args=(process, generation), daemon=True,
                          name='armor-core-watch').start()
+        if self._on_ready:
+            try:
+                self._on_ready(lambda payload: self._exchange(payload, connection, generation,
+                                                              None))
+            except Exception as error:
+                with self._state:
+                    self._lost = generation
+                process.kill()
+                raise CoreUnavailable(f'restoring the new core failed: {error}') from error
+        with self._state:
+            if generation == self._generation and process.poll() is None:
+                self._available = True
+                self._state.notify_all()
         self._log.info(f'knowledge core {process.pid} ready on {socket_path}')
 
     def request(self, payload: dict, timeout_s: Optional[float] = None) -> dict:
@@ -113,11 +126,16 @@ class CoreProcess:
                     f'{self._restart_wait_s:.0f} s')
             if self._stopping:
                 raise CoreUnavailable('the node is shutting down')
+            connection = self._socket
+            generation = self._generation
+        return self._exchange(payload, connection, generation, timeout_s)
+
+    def _exchange(self, payload: dict, connection: socket.socket, generation: int,
+                  timeout_s: Optional[float]) -> dict:
+        with self._state:
             request_id = next(self._ids)
             future: concurrent.futures.Future = concurrent.futures.Future()
             self._pending[request_id] = future
-            connection = self._socket
-            generation = self._generation
         try:
             with self._send_lock:
                 wire.send_frame(connection, {'id': request_id, **payload})
@@ -132,12 +150,6 @@ class CoreProcess:
         if 'error' in reply:
             raise CoreUnavailable(f'the core refused the request: {reply["error"]}')
         return reply
-
-    def kill(self) -> None:
-        """SIGKILL the current core (the supervisor then restarts it); for tests and tools."""
-        process = self._process
-        if process and process.poll() is None:
-            process.kill()
 
     def stop(self) -> None:
         """Stop supervising and end the core."""
@@ -202,33 +214,38 @@ class CoreProcess:
 
     def _core_lost(self, generation: int, reason: str) -> None:
         with self._state:
-            if generation != self._generation or not self._available:
+            if generation != self._generation or self._lost == generation:
                 return
+            self._lost = generation
             self._available = False
             self._fail_pending(reason)
             process, connection = self._process, self._socket
-            stopping = self._stopping
+            restart = not self._stopping and not self._restarting
+            self._restarting = self._restarting or restart
         if connection:
             connection.close()
         if process and process.poll() is None:
             process.kill()
-        if not stopping:
-            self._log.error(f'{reason}; starting a new core')
+        self._log.error(reason)
+        if restart:
+            self._log.error('starting a new core')
             threading.Thread(target=self._restart, daemon=True, name='armor-core-restart').start()
 
     def _restart(self) -> None:
+        """Start cores until one comes up; only one of these runs at a time."""
         delay_s = 0.5
-        while not self._stopping:
-            try:
-                self.start()
-                self._restarts += 1
-                if self._on_restart:
-                    self._on_restart()
-                return
-            except CoreUnavailable as error:
-                self._log.error(f'{error}; retrying in {delay_s:.1f} s')
-                time.sleep(delay_s)
-                delay_s = min(delay_s * 2, 10.0)
+        try:
+            while not self._stopping:
+                try:
+                    self.start()
+                    return
+                except CoreUnavailable as error:
+                    self._log.error(f'{error}; retrying in {delay_s:.1f} s')
+                    time.sleep(delay_s)
+                    delay_s = min(delay_s * 2, 10.0)
+        finally:
+            with self._state:
+                self._restarting = False
 
     def _fail_pending(self, reason: str) -> None:
         """Answer every waiting request with the failure; the caller holds self._state."""

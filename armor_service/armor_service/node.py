@@ -37,9 +37,8 @@ class ArmorService(Node):
         self._core = CoreProcess(
             self._core_jar(), {name: self._value(name) for name in _CORE_SETTINGS},
             jvm_options=tuple(self._value('jvm_options')), logger=self.get_logger(),
-            on_restart=self._preload)
+            on_ready=self._preload)
         self._core.start()
-        self._preload()
         # Each callback blocks until the core answers. A reentrant group on a multi-threaded
         # executor lets a slow REASON on one reference wait while queries on others (and on
         # the same one, which the core serialises per reference) are answered meanwhile.
@@ -101,7 +100,8 @@ class ArmorService(Node):
         seconds = self._value('request_timeout_s')
         return seconds if seconds > 0 else None
 
-    def _preload(self) -> None:
+    def _preload(self, send) -> None:
+        """Load the preload file into a new core, before it takes any request."""
         path = self._value('preload_file')
         if not path:
             return
@@ -112,7 +112,7 @@ class ArmorService(Node):
                      str(self._value('preload_buffered_manipulation')).lower(),
                      self._value('preload_reasoner'),
                      str(self._value('preload_buffered_reasoner')).lower()]}
-        reply = self._core.request({'op': 'directive', 'directive': directive})['response']
+        reply = send({'op': 'directive', 'directive': directive})['response']
         if not reply['success']:
             raise RuntimeError(f'preloading {path} failed: {reply["exit_code"]} '
                                f'{reply["error_description"]}')

@@ -97,7 +97,7 @@ def call(armor):
     from armor_client import directive
 
     def send(reference, words, *args, client='test', timeout_s=120):
-        command, primary, secondary = (words.split() + ['', ''])[:3]
+        command, primary, secondary = (words.split() + ['', '', ''])[:3]
         return armor.call(directive(client, reference, command, primary, secondary, args),
                           timeout_s=timeout_s)
     return send

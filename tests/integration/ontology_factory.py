@@ -1,5 +1,9 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-"""Writes robotics ABoxes of any size on the TBox of ontologies/robotics.owl."""
+"""Writes robotics ABoxes of any size on the TBox of ontologies/robotics.owl.
+
+Realising 800 rooms and 4,000 robots takes JFact about 6 s here: long enough for tests that
+need a REASON still running while they act.
+"""
 
 import pathlib
 

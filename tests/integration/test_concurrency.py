@@ -9,8 +9,8 @@ from ontology_factory import write_abox
 
 
 def test_queries_on_other_references_run_during_a_long_reason(armor_node, call):
-    big = write_abox(armor_node.scratch / 'big.owl', rooms=300, robots=1500)
-    assert call('big', 'LOAD FILE', str(big), '', 'false', 'HERMIT', 'true').success
+    big = write_abox(armor_node.scratch / 'big.owl', rooms=800, robots=4000)
+    assert call('big', 'LOAD FILE', str(big), '', 'false', 'JFACT', 'true').success
     assert call('big', 'ADD OBJECTPROP IND', 'isIn', 'bot0', 'room1').success
 
     reason_times = {}

@@ -27,9 +27,9 @@ def supervised(tmp_path_factory):
 
 def test_core_killed_mid_reason_answers_in_flight_and_restarts(supervised):
     node, armor = supervised
-    big = write_abox(node.scratch / 'big.owl', rooms=300, robots=1500)
+    big = write_abox(node.scratch / 'big.owl', rooms=800, robots=4000)
     assert armor.call(directive('t', 'big', 'LOAD', 'FILE', '',
-                                [str(big), '', 'false', 'HERMIT', 'true']), timeout_s=300).success
+                                [str(big), '', 'false', 'JFACT', 'true']), timeout_s=300).success
     armor.call(directive('t', 'big', 'ADD', 'OBJECTPROP', 'IND', ['isIn', 'bot0', 'room2']))
     first_core = node.core_pid()
 

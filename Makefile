@@ -1,0 +1,24 @@
+# ARMOR for ROS 2: every developer task is one target. Each installs what it needs first
+# (tools/setup.sh is idempotent: a second run takes a second or two and changes nothing).
+SHELL := /bin/bash
+.DEFAULT_GOAL := help
+
+ROBOTICS := $(CURDIR)/ontologies/robotics.owl
+
+.PHONY: help setup run test clean
+
+help:  ## list the targets
+	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-8s %s\n", $$1, $$2}'
+
+setup:  ## install everything: venv with pinned ROS 2 wheels, armor_msgs, Java core, Python packages
+	bash tools/setup.sh
+
+run: setup  ## start the service with the robotics ontology preloaded as reference "robotics"
+	source install/setup.bash && armor serve --ros-args \
+	  -p preload_file:=$(ROBOTICS) -p preload_reference:=robotics
+
+test: setup  ## run the whole test suite: JUnit (core) and pytest (node over real ROS 2)
+	bash tools/test.sh
+
+clean:  ## remove build products (keeps the Maven and pip caches)
+	rm -rf .venv build install log core/target

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The whole test suite: the core's JUnit tests, then the Python tests, which start the real
+# node in its own process and call it over ROS 2. Run through `make test` (which sets up first).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+source install/setup.bash
+
+echo "== core: JUnit (Maven Surefire)"
+mvn -B -q -f core/pom.xml test
+python3 - <<'PY'
+import glob, xml.etree.ElementTree as ET
+runs = failures = errors = skipped = 0
+for report in glob.glob('core/target/surefire-reports/TEST-*.xml'):
+    suite = ET.parse(report).getroot()
+    runs += int(suite.get('tests')); failures += int(suite.get('failures'))
+    errors += int(suite.get('errors')); skipped += int(suite.get('skipped'))
+print(f'core: Tests run: {runs}, Failures: {failures}, Errors: {errors}, Skipped: {skipped}')
+PY
+
+echo "== node, client and CLI: pytest over ROS 2"
+python -m pytest -p no:cacheprovider "$@"
