@@ -4,10 +4,6 @@
 import os
 import pathlib
 import random
-import signal
-import subprocess
-import sys
-import time
 
 import pytest
 
@@ -29,53 +25,20 @@ def iris(*names: str) -> list:
     return sorted(iri(n) for n in names)
 
 
-class ArmorNode:
-    """A running `armor serve` process."""
-
-    def __init__(self, scratch: pathlib.Path, *ros_args: str):
-        self.scratch = scratch
-        self.log_path = scratch / 'armor_service.log'
-        params = ['-p', f'preload_file:={ONTOLOGIES / "robotics.owl"}',
-                  '-p', 'preload_reference:=robotics',
-                  '-p', f'allowed_dirs:=["{ONTOLOGIES}", "{TEST_ONTOLOGIES}", "{scratch}"]']
-        params += list(ros_args)
-        self._log = open(self.log_path, 'w')
-        self.process = subprocess.Popen(
-            [sys.executable, '-m', 'armor_client.cli', 'serve', '--ros-args', *params],
-            stdout=self._log, stderr=subprocess.STDOUT, cwd=scratch)
-
-    def core_pid(self, wait_s: float = 60.0) -> int:
-        """PID of the Java core, the node's child process (waits through a restart)."""
-        deadline = time.monotonic() + wait_s
-        while time.monotonic() < deadline:
-            for stat in pathlib.Path('/proc').glob('[0-9]*/stat'):
-                try:
-                    fields = stat.read_text().rsplit(')', 1)[1].split()
-                    name = stat.read_text().split('(', 1)[1].rsplit(')', 1)[0]
-                except (OSError, IndexError):
-                    continue
-                if int(fields[1]) == self.process.pid and name == 'java':
-                    return int(stat.parent.name)
-            time.sleep(0.1)
-        raise AssertionError('the node has no Java core child')
-
-    def log(self) -> str:
-        return self.log_path.read_text()
-
-    def stop(self) -> None:
-        if self.process.poll() is None:
-            self.process.send_signal(signal.SIGINT)
-            try:
-                self.process.wait(timeout=20)
-            except subprocess.TimeoutExpired:
-                self.process.kill()
-                self.process.wait()
-        self._log.close()
+def start_node(scratch: pathlib.Path, *ros_args: str):
+    """A node preloading robotics.owl as "robotics", allowed to read and write in scratch."""
+    from armor_client.launch import ArmorNodeProcess
+    node = ArmorNodeProcess(scratch / 'armor_service.log', [
+        '-p', f'preload_file:={ONTOLOGIES / "robotics.owl"}', '-p', 'preload_reference:=robotics',
+        '-p', f'allowed_dirs:=["{ONTOLOGIES}", "{TEST_ONTOLOGIES}", "{scratch}"]', *ros_args],
+        cwd=scratch)
+    node.scratch = scratch
+    return node
 
 
 @pytest.fixture(scope='session')
 def armor_node(tmp_path_factory):
-    node = ArmorNode(tmp_path_factory.mktemp('armor'))
+    node = start_node(tmp_path_factory.mktemp('armor'))
     yield node
     node.stop()
 

@@ -7,7 +7,7 @@ import threading
 import time
 
 from armor_client import ArmorTransport, directive
-from conftest import ArmorNode, iris
+from conftest import iris, start_node
 from ontology_factory import write_abox
 import pytest
 
@@ -17,7 +17,7 @@ CORE_UNAVAILABLE = 216
 @pytest.fixture(scope='module')
 def supervised(tmp_path_factory):
     # A node of its own, in its own namespace, so killing its core disturbs no other test.
-    node = ArmorNode(tmp_path_factory.mktemp('supervised'), '-r', '__ns:=/supervised')
+    node = start_node(tmp_path_factory.mktemp('supervised'), '-r', '__ns:=/supervised')
     transport = ArmorTransport(namespace='/supervised', service_wait_s=90.0)
     assert transport.call(directive('t', '', 'GET', 'ALL', 'REFS'), timeout_s=120).success
     yield node, transport

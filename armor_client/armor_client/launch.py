@@ -1,0 +1,56 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""Start an ARMOR node as a child process (what a launch file does, for scripts and tests)."""
+
+import pathlib
+import signal
+import subprocess
+import sys
+import time
+from typing import Optional, Sequence
+
+
+class ArmorNodeProcess:
+    """`armor serve --ros-args ...` running in the background, its output in a log file.
+
+    Args:
+        log_path: where the node's stdout and stderr go.
+        ros_args: ROS arguments after --ros-args (-p name:=value, -r __ns:=/x, ...).
+        cwd: working directory of the node (relative paths resolve against it).
+    """
+
+    def __init__(self, log_path: pathlib.Path, ros_args: Sequence[str] = (),
+                 cwd: Optional[pathlib.Path] = None):
+        self.log_path = pathlib.Path(log_path)
+        self._log = open(self.log_path, 'w')
+        self.process = subprocess.Popen(
+            [sys.executable, '-m', 'armor_client.cli', 'serve', '--ros-args', *ros_args],
+            stdout=self._log, stderr=subprocess.STDOUT, cwd=cwd)
+
+    def core_pid(self, wait_s: float = 60.0) -> int:
+        """PID of the node's Java core (waits while a core is being restarted)."""
+        deadline = time.monotonic() + wait_s
+        while time.monotonic() < deadline:
+            for stat in pathlib.Path('/proc').glob('[0-9]*/stat'):
+                try:
+                    text = stat.read_text()
+                except OSError:
+                    continue
+                name, rest = text.split('(', 1)[1].rsplit(')', 1)
+                if name == 'java' and int(rest.split()[1]) == self.process.pid:
+                    return int(stat.parent.name)
+            time.sleep(0.1)
+        raise RuntimeError(f'node {self.process.pid} has no Java core child')
+
+    def log(self) -> str:
+        return self.log_path.read_text()
+
+    def stop(self, timeout_s: float = 20.0) -> None:
+        """Ctrl-C the node (it stops its core), killing it if it does not exit in time."""
+        if self.process.poll() is None:
+            self.process.send_signal(signal.SIGINT)
+            try:
+                self.process.wait(timeout=timeout_s)
+            except subprocess.TimeoutExpired:
+                self.process.kill()
+                self.process.wait()
+        self._log.close()
