@@ -59,6 +59,14 @@ public final class ArmorCore {
      */
     public ListResponse executeList(List<Directive> directives) {
         ListState state = new ListState();
+        try {
+            return runList(directives, state);
+        } finally {
+            state.releaseAll();
+        }
+    }
+
+    private ListResponse runList(List<Directive> directives, ListState state) {
         List<Response> responses = new ArrayList<>();
         int failed = -1;
         for (int i = 0; i < directives.size() && failed < 0; i++) {
@@ -132,7 +140,8 @@ public final class ArmorCore {
         return switch (spec.target()) {
             case NONE -> spec.handler().run(context(directive, null));
             case NEW -> create(spec, directive, list);
-            case EXISTING -> references.get(directive.referenceName()).locked(config.lockWaitMs(), reference -> {
+            case EXISTING -> holdFor(list, references.get(directive.referenceName())).locked(config.lockWaitMs(),
+                    reference -> {
                 releaseExpiredMount(reference);
                 if (spec.mountChecked()) {
                     checkMount(reference, directive);
@@ -152,11 +161,29 @@ public final class ArmorCore {
     private Response create(CommandSpec spec, Directive directive, ListState list) {
         boolean existed = references.find(directive.referenceName()).isPresent();
         Response response = spec.handler().run(context(directive, null));
-        if (list != null && !existed) {
-            references.find(directive.referenceName()).ifPresent(list.created::add);
-            list.changedBy.add(list.position);
+        if (list != null) {
+            references.find(directive.referenceName()).ifPresent(reference -> {
+                holdFor(list, reference);
+                if (!existed) {
+                    list.created.add(reference);
+                    list.changedBy.add(list.position);
+                }
+            });
         }
         return response;
+    }
+
+    /** Inside a list, keeps the reference until the list ends, so no other directive interleaves. */
+    private Reference holdFor(ListState list, Reference reference) {
+        if (list != null && list.held.add(reference)) {
+            try {
+                reference.acquire(config.lockWaitMs());
+            } catch (ArmorException e) {
+                list.held.remove(reference);
+                throw e;
+            }
+        }
+        return reference;
     }
 
     private CommandContext context(Directive directive, Reference reference) {
@@ -190,6 +217,7 @@ public final class ArmorCore {
 
     /** What an atomic list has touched so far, to undo it if a later directive fails. */
     private final class ListState {
+        final Set<Reference> held = new LinkedHashSet<>();
         final Set<Reference> enrolled = new LinkedHashSet<>();
         final List<Reference> created = new ArrayList<>();
         final Set<Integer> changedBy = new LinkedHashSet<>();
@@ -202,25 +230,23 @@ public final class ArmorCore {
         }
 
         void commit() {
-            enrolled.forEach(r -> r.locked(config.lockWaitMs(), ref -> {
-                ref.commitTransaction();
-                return null;
-            }));
+            enrolled.forEach(Reference::commitTransaction);
         }
 
         void rollback() {
             List<Reference> undo = new ArrayList<>(enrolled);
             java.util.Collections.reverse(undo);
             for (Reference reference : undo) {
-                if (created.contains(reference)) {
-                    continue;
+                if (!created.contains(reference)) {
+                    reference.rollbackTransaction();
                 }
-                reference.locked(Long.MAX_VALUE / 2, ref -> {
-                    ref.rollbackTransaction();
-                    return null;
-                });
             }
             created.forEach(references::remove);
+        }
+
+        void releaseAll() {
+            held.forEach(Reference::release);
+            held.clear();
         }
     }
 }

@@ -5,9 +5,13 @@ import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Function;
+import java.util.function.Supplier;
 import org.semanticweb.owlapi.model.OWLDataFactory;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
@@ -40,6 +44,13 @@ public final class Reference {
     private final boolean bufferedManipulation;
     private final boolean bufferedReasoner;
     private final long reasonerTimeoutMs;
+    // One timer thread for every reference: it only ever calls OWLReasoner.interrupt().
+    private static final ScheduledExecutorService ALARMS = Executors.newSingleThreadScheduledExecutor(r -> {
+        Thread thread = new Thread(r, "armor-reasoner-time-limit");
+        thread.setDaemon(true);
+        return thread;
+    });
+
     private final ReentrantLock lock = new ReentrantLock(true);
 
     private final List<OWLOntologyChange> pending = new ArrayList<>();
@@ -65,6 +76,21 @@ public final class Reference {
 
     /** Runs {@code work} holding this reference, waiting at most {@code waitMs} for other directives. */
     public <T> T locked(long waitMs, Function<Reference, T> work) {
+        acquire(waitMs);
+        try {
+            return work.apply(this);
+        } finally {
+            release();
+        }
+    }
+
+    /**
+     * Takes this reference for the calling thread (re-entrant), waiting at most {@code waitMs};
+     * an atomic list holds every reference it touches this way until it ends.
+     *
+     * @throws ArmorException TIMEOUT when another directive kept it longer
+     */
+    public void acquire(long waitMs) {
         boolean acquired;
         try {
             acquired = lock.tryLock(waitMs, TimeUnit.MILLISECONDS);
@@ -76,11 +102,10 @@ public final class Reference {
             throw new ArmorException(ExitCode.TIMEOUT, "reference '" + name + "' stayed busy for " + waitMs
                     + " ms (another directive is using it)");
         }
-        try {
-            return work.apply(this);
-        } finally {
-            lock.unlock();
-        }
+    }
+
+    public void release() {
+        lock.unlock();
     }
 
     public String name() {
@@ -176,16 +201,19 @@ public final class Reference {
         return reasoner;
     }
 
-    /** Runs a reasoner call, turning the reasoner's own failures into ARMOR codes. */
-    public <T> T guardReasoner(java.util.function.Supplier<T> call) {
+    /**
+     * Runs a reasoner call within the reasoner time limit, turning the reasoner's own failures
+     * into ARMOR codes. A reasoner that overruns is interrupted and replaced by a fresh one, so
+     * the reference stays usable (its next query reasons from scratch).
+     */
+    public <T> T guardReasoner(Supplier<T> call) {
         try {
-            return call.get();
+            return withinTimeLimit(call);
         } catch (InconsistentOntologyException e) {
             consistent = false;
             throw new ArmorException(ExitCode.INCONSISTENT, "reference '" + name + "' is inconsistent", e);
         } catch (TimeOutException | ReasonerInterruptedException e) {
-            throw new ArmorException(ExitCode.TIMEOUT, reasonerName + " exceeded its time limit of "
-                    + reasonerTimeoutMs + " ms on reference '" + name + "'", e);
+            throw overran(e);
         } catch (UnsupportedOperationException e) {
             throw new ArmorException(ExitCode.NOT_SUPPORTED, reasonerName + " does not support this: "
                     + e.getMessage(), e);
@@ -253,12 +281,36 @@ public final class Reference {
         refreshConsistency();
     }
 
+    private <T> T withinTimeLimit(Supplier<T> call) {
+        if (reasonerTimeoutMs <= 0) {
+            return call.get();
+        }
+        OWLReasoner running = reasoner;
+        ScheduledFuture<?> alarm = ALARMS.schedule(running::interrupt, reasonerTimeoutMs, TimeUnit.MILLISECONDS);
+        try {
+            return call.get();
+        } finally {
+            alarm.cancel(false);
+        }
+    }
+
+    private ArmorException overran(RuntimeException cause) {
+        try {
+            reasoner.dispose();
+        } catch (RuntimeException e) {
+            // the interrupted reasoner may be half torn down; it is replaced either way
+        }
+        reasoner = createReasoner();
+        return new ArmorException(ExitCode.TIMEOUT, reasonerName + " exceeded the reasoner time limit of "
+                + reasonerTimeoutMs + " ms on reference '" + name + "' and was interrupted; the reference is"
+                + " usable and its reasoner starts afresh", cause);
+    }
+
     private void refreshConsistency() {
         try {
-            consistent = reasoner.isConsistent();
+            consistent = withinTimeLimit(reasoner::isConsistent);
         } catch (TimeOutException | ReasonerInterruptedException e) {
-            throw new ArmorException(ExitCode.TIMEOUT, reasonerName + " exceeded its time limit of "
-                    + reasonerTimeoutMs + " ms checking consistency of '" + name + "'", e);
+            throw overran(e);
         } catch (RuntimeException e) {
             // An unsupported construct makes some reasoners fail on isConsistent; other
             // directives on the reference must stay usable, so only the answer says so.
