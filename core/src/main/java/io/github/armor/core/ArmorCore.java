@@ -11,6 +11,8 @@ import io.github.armor.core.command.CommandSpec;
 import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.command.DirectiveLog;
 import io.github.armor.core.command.Rendering;
+import io.github.armor.core.durability.StateStore;
+import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
 import java.util.ArrayList;
@@ -36,10 +38,64 @@ public final class ArmorCore {
     private final Rendering rendering;
     private final DirectiveLog directiveLog = new DirectiveLog(System.err);
     private final Map<String, Long> lastHeardFrom = new ConcurrentHashMap<>();
+    private final StateStore state;
+    // Replayed directives were journaled when first acknowledged: they must not be again.
+    private final ThreadLocal<Boolean> replaying = ThreadLocal.withInitial(() -> false);
 
     public ArmorCore(CoreConfig config) {
         this.config = config;
         this.rendering = new Rendering(config.fullEntityIri());
+        this.state = config.durability().stateDir() == null ? null : new StateStore(config.durability());
+    }
+
+    /**
+     * Brings back every reference kept in the state directory: its last checkpoint, then its
+     * journal replayed through the ordinary dispatch. Call once, before serving.
+     */
+    public void restoreState() {
+        if (state == null) {
+            return;
+        }
+        for (StateStore.Restorable restorable : state.recoverAll(new OntologyFiles(config))) {
+            long start = System.nanoTime();
+            try {
+                Reference reference = Reference.open(restorable.name(), restorable.ontology(), restorable.settings(),
+                        config.reasonerTimeoutMs());
+                reference.setMountedBy(restorable.mountedBy());
+                references.register(reference);
+                restorable.records().forEach(this::replay);
+                reference.synchroniseReasoner();
+                state.adopt(restorable);
+                LOG.warn("restored reference '{}' ({} journal records) in {} ms", restorable.name(),
+                        restorable.records().size(), (System.nanoTime() - start) / 1_000_000);
+            } catch (RuntimeException e) {
+                LOG.error("could not restore reference '{}'", restorable.name(), e);
+            }
+        }
+    }
+
+    private void replay(List<Directive> record) {
+        replaying.set(true);
+        try {
+            for (Directive directive : record) {
+                // A journaled REASON stands for its APPLY: the restored reasoner sees everything anyway.
+                Directive replayed = directive.key().equals("REASON - -") ? new Directive(directive.clientName(),
+                        directive.referenceName(), "APPLY", "", "", List.of()) : directive;
+                Response response = run(replayed, null);
+                if (!response.success()) {
+                    LOG.warn("replaying {} failed: {} {}", directive.describe(), response.exitCode(),
+                            response.errorDescription());
+                }
+            }
+        } finally {
+            replaying.set(false);
+        }
+    }
+
+    /** Directives whose effect must survive a restart: changes, APPLY/REASON, mounting. */
+    private boolean journaled(CommandSpec spec) {
+        return state != null && !replaying.get() && (spec.mountChecked() || spec.key().equals("MOUNT - -")
+                || spec.key().equals("UNMOUNT - -"));
     }
 
     /** The answer of a list: one response per directive, in order. */
@@ -58,35 +114,46 @@ public final class ArmorCore {
      * the later ones are not run; both answer {@link ExitCode#ROLLED_BACK}.
      */
     public ListResponse executeList(List<Directive> directives) {
-        ListState state = new ListState();
+        ListState list = new ListState();
         try {
-            return runList(directives, state);
+            return runList(directives, list);
         } finally {
-            state.releaseAll();
+            list.releaseAll();
         }
     }
 
-    private ListResponse runList(List<Directive> directives, ListState state) {
+    private ListResponse runList(List<Directive> directives, ListState list) {
         List<Response> responses = new ArrayList<>();
         int failed = -1;
         for (int i = 0; i < directives.size() && failed < 0; i++) {
-            state.position = i;
-            Response response = run(directives.get(i), state);
+            list.position = i;
+            Response response = run(directives.get(i), list);
             responses.add(response);
             if (!response.success()) {
                 failed = i;
             }
         }
         if (failed < 0) {
-            state.commit();
+            try {
+                list.journal();
+            } catch (ArmorException e) {
+                list.rollback();
+                List<Response> undone = new ArrayList<>();
+                for (Directive directive : directives) {
+                    undone.add(rolledBack("undone because the list could not be journaled: " + e.getMessage(),
+                            directive));
+                }
+                return new ListResponse(false, false, undone);
+            }
+            list.commit();
             boolean consistent = responses.isEmpty() || responses.get(responses.size() - 1).isConsistent();
             return new ListResponse(true, consistent, responses);
         }
-        state.rollback();
+        list.rollback();
         String cause = "directive " + failed + " (" + directives.get(failed).describe() + ") failed: "
                 + responses.get(failed).errorDescription();
         for (int i = 0; i < failed; i++) {
-            if (state.changedBy.contains(i)) {
+            if (list.changedBy.contains(i)) {
                 responses.set(i, rolledBack("undone because " + cause, directives.get(i)));
             }
         }
@@ -149,18 +216,61 @@ public final class ArmorCore {
                         list.enrol(reference);
                     }
                 }
-                Response response = spec.handler().run(context(directive, reference));
+                Response response = runUndoable(spec, directive, reference, list);
                 if (list != null && spec.mountChecked()) {
                     list.changedBy.add(list.position);
+                }
+                if (list != null && journaled(spec)) {
+                    list.toJournal.computeIfAbsent(reference, r -> new ArrayList<>()).add(directive);
+                }
+                if (state != null && !replaying.get() && spec.key().equals("DROP - -")) {
+                    state.dropped(reference);
                 }
                 return response;
             });
         };
     }
 
+    /**
+     * Runs a directive so that a failure changes nothing: a change that throws half-way is undone,
+     * and outside a list an acknowledged change is journaled first (undone if that fails).
+     */
+    private Response runUndoable(CommandSpec spec, Directive directive, Reference reference, ListState list) {
+        boolean single = list == null && spec.mountChecked();
+        if (single) {
+            reference.beginTransaction();
+        }
+        try {
+            Response response = spec.handler().run(context(directive, reference));
+            if (list == null && journaled(spec)) {
+                state.record(reference, List.of(directive));
+                state.checkpointIfDue(reference);
+            }
+            return response;
+        } catch (RuntimeException | StackOverflowError e) {
+            if (single) {
+                reference.rollbackTransaction();
+            }
+            throw e;
+        } finally {
+            if (single) {
+                reference.commitTransaction();
+            }
+        }
+    }
+
     private Response create(CommandSpec spec, Directive directive, ListState list) {
         boolean existed = references.find(directive.referenceName()).isPresent();
         Response response = spec.handler().run(context(directive, null));
+        Reference made = references.find(directive.referenceName()).orElse(null);
+        if (state != null && !replaying.get() && !existed && made != null) {
+            try {
+                state.created(made);
+            } catch (ArmorException e) {
+                references.remove(made);
+                throw e;
+            }
+        }
         if (list != null) {
             references.find(directive.referenceName()).ifPresent(reference -> {
                 holdFor(list, reference);
@@ -221,7 +331,16 @@ public final class ArmorCore {
         final Set<Reference> enrolled = new LinkedHashSet<>();
         final List<Reference> created = new ArrayList<>();
         final Set<Integer> changedBy = new LinkedHashSet<>();
+        final Map<Reference, List<Directive>> toJournal = new java.util.LinkedHashMap<>();
         int position;
+
+        /** One journal record per reference for the whole list, before it is acknowledged. */
+        void journal() {
+            toJournal.forEach((reference, directives) -> {
+                ArmorCore.this.state.record(reference, directives);
+            });
+            toJournal.keySet().forEach(reference -> ArmorCore.this.state.checkpointIfDue(reference));
+        }
 
         void enrol(Reference reference) {
             if (enrolled.add(reference)) {
@@ -241,7 +360,12 @@ public final class ArmorCore {
                     reference.rollbackTransaction();
                 }
             }
-            created.forEach(references::remove);
+            for (Reference reference : created) {
+                references.remove(reference);
+                if (ArmorCore.this.state != null) {
+                    ArmorCore.this.state.dropped(reference);
+                }
+            }
         }
 
         void releaseAll() {

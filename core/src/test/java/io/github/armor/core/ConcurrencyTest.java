@@ -27,7 +27,7 @@ class ConcurrencyTest {
 
     private static ArmorCore core(long lockWaitMs, long reasonerTimeoutMs, long mountLeaseS) {
         return new ArmorCore(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES), false, lockWaitMs,
-                reasonerTimeoutMs, mountLeaseS));
+                reasonerTimeoutMs, mountLeaseS, CoreConfig.Durability.NONE));
     }
 
     private static Response run(ArmorCore core, String client, String reference, String words, String... args) {

@@ -197,7 +197,7 @@ class DispatchTest {
     @Test
     void entityNamesCanBeShort() {
         ArmorCore core = new ArmorCore(new io.github.armor.core.api.CoreConfig(false, "HERMIT",
-                List.of(CoreFixture.ONTOLOGIES), false, 1000, 0, 0));
+                List.of(CoreFixture.ONTOLOGIES), false, 1000, 0, 0, io.github.armor.core.api.CoreConfig.Durability.NONE));
         core.execute(Directive.of("c", "map", "LOAD", "FILE", "", CoreFixture.ONTOLOGIES.resolve("robotics.owl")
                 .toString(), "", "false", "HERMIT", "true"));
         assertEquals(List.of("kitchen"), core.execute(Directive.of("c", "map", "QUERY", "IND", "CLASS",

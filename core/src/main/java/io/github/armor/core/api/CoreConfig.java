@@ -15,6 +15,7 @@ import java.util.List;
  * @param lockWaitMs       how long a directive waits for a reference another directive is using
  * @param reasonerTimeoutMs time limit handed to the reasoners (0 = none)
  * @param mountLeaseS      a mount whose holder sent nothing for this long is released (0 = never)
+ * @param durability       where and how acknowledged changes are kept across restarts
  */
 public record CoreConfig(
         boolean fullEntityIri,
@@ -23,7 +24,22 @@ public record CoreConfig(
         boolean webLoading,
         long lockWaitMs,
         long reasonerTimeoutMs,
-        long mountLeaseS) {
+        long mountLeaseS,
+        Durability durability) {
+
+    /**
+     * Journal and checkpoint settings.
+     *
+     * @param stateDir               root of the per-reference journals; null keeps nothing on disk
+     * @param restore                load the state found at start (false: delete it, start clean)
+     * @param fsync                  force each journal record to the disk before acknowledging
+     * @param checkpointEveryChanges checkpoint a reference after this many journal records
+     * @param checkpointEverySeconds ... or when its last checkpoint is this old and it changed since
+     */
+    public record Durability(Path stateDir, boolean restore, boolean fsync, int checkpointEveryChanges,
+                             long checkpointEverySeconds) {
+        public static final Durability NONE = new Durability(null, false, false, 1000, 60);
+    }
 
     public CoreConfig {
         allowedDirs = List.copyOf(allowedDirs);
@@ -32,6 +48,6 @@ public record CoreConfig(
 
     /** Settings for tests and embedding: full IRIs, HermiT, the given directories, generous waits. */
     public static CoreConfig defaults(Path... allowedDirs) {
-        return new CoreConfig(true, "HERMIT", List.of(allowedDirs), false, 30_000, 0, 0);
+        return new CoreConfig(true, "HERMIT", List.of(allowedDirs), false, 30_000, 0, 0, Durability.NONE);
     }
 }

@@ -4,15 +4,12 @@ package io.github.armor.core.command;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
-import io.github.armor.core.reference.EntityResolver;
 import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.ReasonerRegistry;
 import io.github.armor.core.reference.Reference;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Map;
 import java.util.function.Function;
-import org.semanticweb.owlapi.model.OWLDocumentFormat;
 import org.semanticweb.owlapi.model.OWLOntology;
 
 /** Contract 5.1: creating, saving and dropping references, mounting, and the utilities. */
@@ -87,25 +84,14 @@ final class ReferenceCommands {
         boolean bufferedReasoner = c.flag(first + 4);
         String name = c.directive().referenceName();
         String client = c.directive().clientName();
-        Reference reference = c.references().createOrReuse(name, source, () -> {
-            OWLOntology ontology = reader.apply(source);
-            String ontologyIri = !iriArgument.isEmpty() ? iriArgument
-                    : ontology.getOntologyID().getOntologyIRI().map(Object::toString).orElse("urn:armor:" + name);
-            String namespace = ontologyIri.endsWith("#") || ontologyIri.endsWith("/") ? ontologyIri : ontologyIri + "#";
-            EntityResolver names = new EntityResolver(ontology, namespace, declaredPrefixes(ontology));
-            return new Reference(name, source, ontology, names, reasoner, bufferedManipulation, bufferedReasoner,
-                    c.config().reasonerTimeoutMs());
-        });
+        Reference.Settings settings = new Reference.Settings(source, iriArgument, reasoner, bufferedManipulation,
+                bufferedReasoner);
+        Reference reference = c.references().createOrReuse(name, source, () ->
+                Reference.open(name, reader.apply(source), settings, c.config().reasonerTimeoutMs()));
         if (mount) {
             takeMount(reference, client);
         }
         return Response.ok(reference.isConsistent(), List.of());
-    }
-
-    private static Map<String, String> declaredPrefixes(OWLOntology ontology) {
-        OWLDocumentFormat format = ontology.getOWLOntologyManager().getOntologyFormat(ontology);
-        return EntityResolver.prefixesOf(format != null && format.isPrefixOWLDocumentFormat()
-                ? format.asPrefixOWLDocumentFormat().getPrefixName2PrefixMap() : Map.of());
     }
 
     private static Response save(CommandContext c, boolean withInferences) {

@@ -110,6 +110,12 @@ public final class OntologyFiles {
         return load(newManager(path.getParent()), new FileDocumentSource(path.toFile()), clientPath);
     }
 
+    /** A file the core wrote itself (a checkpoint): no path confinement, imports resolved from importsDir. */
+    public OWLOntology loadTrusted(Path file, Path importsDir) {
+        OWLOntologyManager manager = newManager(importsDir);
+        return load(manager, new FileDocumentSource(file.toFile()), file.toString());
+    }
+
     public OWLOntology loadWeb(String url) {
         if (!config.webLoading()) {
             throw new ArmorException(ExitCode.WEB_LOADING_DISABLED,

@@ -5,6 +5,7 @@ import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
@@ -13,6 +14,7 @@ import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLDocumentFormat;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
@@ -35,7 +37,18 @@ import org.semanticweb.owlapi.reasoner.TimeOutException;
  * whenever the reasoner is brought up to date, so reading it never costs a reasoning pass.
  */
 public final class Reference {
+    /**
+     * How a reference was made: everything needed to make it again from a saved copy.
+     *
+     * @param source           the file or URL it was loaded from; null for CREATE
+     * @param ontologyIri      the ontology IRI argument as given (empty: the document's own)
+     * @param reasoner         canonical reasoner name
+     */
+    public record Settings(String source, String ontologyIri, String reasoner, boolean bufferedManipulation,
+                           boolean bufferedReasoner) {}
+
     private final String name;
+    private final Settings settings;
     private final String source;
     private final OWLOntologyManager manager;
     private final OWLOntology ontology;
@@ -59,16 +72,32 @@ public final class Reference {
     private String mountedBy = "";
     private Transaction transaction;
 
-    public Reference(String name, String source, OWLOntology ontology, EntityResolver resolver, String reasonerName,
-                     boolean bufferedManipulation, boolean bufferedReasoner, long reasonerTimeoutMs) {
+    /**
+     * A reference over an ontology. Plain names take the ontology IRI of the settings (or the
+     * document's own) followed by '#', as ARMOR does; prefixes are those the document declares.
+     */
+    public static Reference open(String name, OWLOntology ontology, Settings settings, long reasonerTimeoutMs) {
+        String ontologyIri = !settings.ontologyIri().isEmpty() ? settings.ontologyIri()
+                : ontology.getOntologyID().getOntologyIRI().map(Object::toString).orElse("urn:armor:" + name);
+        String namespace = ontologyIri.endsWith("#") || ontologyIri.endsWith("/") ? ontologyIri : ontologyIri + "#";
+        OWLDocumentFormat format = ontology.getOWLOntologyManager().getOntologyFormat(ontology);
+        EntityResolver names = new EntityResolver(ontology, namespace, EntityResolver.prefixesOf(
+                format != null && format.isPrefixOWLDocumentFormat()
+                        ? format.asPrefixOWLDocumentFormat().getPrefixName2PrefixMap() : Map.of()));
+        return new Reference(name, settings, ontology, names, reasonerTimeoutMs);
+    }
+
+    private Reference(String name, Settings settings, OWLOntology ontology, EntityResolver resolver,
+                      long reasonerTimeoutMs) {
         this.name = name;
-        this.source = source;
+        this.settings = settings;
+        this.source = settings.source();
         this.manager = ontology.getOWLOntologyManager();
         this.ontology = ontology;
         this.resolver = resolver;
-        this.reasonerName = reasonerName;
-        this.bufferedManipulation = bufferedManipulation;
-        this.bufferedReasoner = bufferedReasoner;
+        this.reasonerName = settings.reasoner();
+        this.bufferedManipulation = settings.bufferedManipulation();
+        this.bufferedReasoner = settings.bufferedReasoner();
         this.reasonerTimeoutMs = reasonerTimeoutMs;
         this.reasoner = createReasoner();
         refreshConsistency();
@@ -114,6 +143,15 @@ public final class Reference {
 
     public String source() {
         return source;
+    }
+
+    public Settings settings() {
+        return settings;
+    }
+
+    /** Whether buffered manipulations wait for APPLY (a checkpoint holds applied changes only). */
+    public boolean hasPending() {
+        return !pending.isEmpty();
     }
 
     public OWLOntology ontology() {
@@ -170,6 +208,9 @@ public final class Reference {
 
     /** APPLY: the queued changes reach the ontology (and a non-buffered reasoner). */
     public void applyPending() {
+        if (transaction != null && transaction.pendingBefore == null) {
+            transaction.pendingBefore = List.copyOf(pending);
+        }
         List<OWLOntologyChange> queued = List.copyOf(pending);
         pending.clear();
         enact(queued);
@@ -233,7 +274,7 @@ public final class Reference {
     /** Starts recording changes so that an atomic directive list can undo them. */
     public void beginTransaction() {
         if (transaction == null) {
-            transaction = new Transaction(List.copyOf(pending));
+            transaction = new Transaction(pending.size());
         }
     }
 
@@ -253,8 +294,12 @@ public final class Reference {
             reversed.add(undo.enacted.get(i).reverseChange());
         }
         manager.applyChanges(reversed);
-        pending.clear();
-        pending.addAll(undo.pendingBefore);
+        if (undo.pendingBefore != null) {
+            pending.clear();
+            pending.addAll(undo.pendingBefore);
+        } else {
+            pending.subList(undo.pendingSizeBefore, pending.size()).clear();
+        }
         if (!bufferedReasoner && !reversed.isEmpty()) {
             synchroniseReasoner();
         }
@@ -273,7 +318,11 @@ public final class Reference {
         }
     }
 
-    private void synchroniseReasoner() {
+    /**
+     * Brings the reasoner up to date with the ontology (applied changes; the buffer stays). After
+     * a restore this makes even a buffered reasoner see everything that was replayed.
+     */
+    public void synchroniseReasoner() {
         guardReasoner(() -> {
             reasoner.flush();
             return null;
@@ -341,12 +390,14 @@ public final class Reference {
         }
     }
 
+    /** What to undo: changes enacted since it began, and the queue as it was (copied only if APPLY empties it). */
     private static final class Transaction {
-        final List<OWLOntologyChange> pendingBefore;
+        final int pendingSizeBefore;
+        List<OWLOntologyChange> pendingBefore;
         final List<OWLOntologyChange> enacted = new ArrayList<>();
 
-        Transaction(List<OWLOntologyChange> pendingBefore) {
-            this.pendingBefore = pendingBefore;
+        Transaction(int pendingSizeBefore) {
+            this.pendingSizeBefore = pendingSizeBefore;
         }
     }
 }

@@ -43,6 +43,11 @@ public final class ReferenceRegistry {
         return created;
     }
 
+    /** Adds a reference recovered from the state directory. */
+    public void register(Reference reference) {
+        references.put(reference.name(), reference);
+    }
+
     public void remove(Reference reference) {
         references.remove(reference.name(), reference);
         reference.dispose();

@@ -12,9 +12,10 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Starts the core process: {@code java -jar armor-core.jar SOCKET_PATH CONFIG_JSON}. Prints one
- * "ready" line on stdout once the socket accepts connections, and exits when stdin closes, so
- * the core never outlives the node that started it.
+ * Starts the core process: {@code java -jar armor-core.jar SOCKET_PATH CONFIG_JSON}. Restores
+ * the references kept in the state directory, then prints one "ready" line on stdout once the
+ * socket accepts connections, and exits when stdin closes, so the core never outlives the node
+ * that started it.
  */
 public final class CoreMain {
     private CoreMain() {}
@@ -37,7 +38,9 @@ public final class CoreMain {
         }, "armor-parent-watch");
         watchParent.setDaemon(true);
         watchParent.start();
-        new CoreServer(new ArmorCore(config)).serve(Path.of(args[0]), () -> {
+        ArmorCore core = new ArmorCore(config);
+        core.restoreState();
+        new CoreServer(core).serve(Path.of(args[0]), () -> {
             System.out.println("ARMOR core ready on " + args[0]);
             System.out.flush();
         });
@@ -54,6 +57,19 @@ public final class CoreMain {
                 json.has("web_loading") && json.get("web_loading").getAsBoolean(),
                 json.has("lock_wait_ms") ? json.get("lock_wait_ms").getAsLong() : 30_000,
                 json.has("reasoner_timeout_ms") ? json.get("reasoner_timeout_ms").getAsLong() : 0,
-                json.has("mount_lease_s") ? json.get("mount_lease_s").getAsLong() : 0);
+                json.has("mount_lease_s") ? json.get("mount_lease_s").getAsLong() : 0,
+                durability(json));
+    }
+
+    private static CoreConfig.Durability durability(JsonObject json) {
+        String stateDir = json.has("state_dir") ? json.get("state_dir").getAsString() : "";
+        if (stateDir.isBlank()) {
+            return CoreConfig.Durability.NONE;
+        }
+        return new CoreConfig.Durability(Path.of(stateDir),
+                !json.has("restore_state") || json.get("restore_state").getAsBoolean(),
+                !json.has("journal_fsync") || json.get("journal_fsync").getAsBoolean(),
+                json.has("checkpoint_every_changes") ? json.get("checkpoint_every_changes").getAsInt() : 1000,
+                json.has("checkpoint_every_s") ? json.get("checkpoint_every_s").getAsLong() : 60);
     }
 }

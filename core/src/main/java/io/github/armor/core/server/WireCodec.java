@@ -6,6 +6,7 @@ import com.google.gson.JsonElement;
 import com.google.gson.JsonObject;
 import io.github.armor.core.ArmorCore.ListResponse;
 import io.github.armor.core.api.Directive;
+import io.github.armor.core.api.DirectiveJson;
 import io.github.armor.core.api.Response;
 import java.util.ArrayList;
 import java.util.List;
@@ -18,14 +19,7 @@ final class WireCodec {
     private WireCodec() {}
 
     static Directive directive(JsonObject json) {
-        List<String> args = new ArrayList<>();
-        if (json.has("args") && json.get("args").isJsonArray()) {
-            for (JsonElement arg : json.getAsJsonArray("args")) {
-                args.add(arg.isJsonNull() ? "" : arg.getAsString());
-            }
-        }
-        return new Directive(text(json, "client_name"), text(json, "reference_name"), text(json, "command"),
-                text(json, "primary_command_spec"), text(json, "secondary_command_spec"), args);
+        return DirectiveJson.fromJson(json);
     }
 
     static List<Directive> directives(JsonArray array) {
@@ -65,10 +59,5 @@ final class WireCodec {
         list.responses().forEach(r -> responses.add(response(r)));
         json.add("armor_responses", responses);
         return json;
-    }
-
-    private static String text(JsonObject json, String key) {
-        JsonElement value = json.get(key);
-        return value == null || value.isJsonNull() ? "" : value.getAsString();
     }
 }
