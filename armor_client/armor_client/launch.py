@@ -16,11 +16,17 @@ class ArmorNodeProcess:
         log_path: where the node's stdout and stderr go.
         ros_args: ROS arguments after --ros-args (-p name:=value, -r __ns:=/x, ...).
         cwd: working directory of the node (relative paths resolve against it).
+
+    Unless ros_args set state_dir, the node keeps its journals in a `state` folder beside the
+    log, so a scripted node never restores what another run left in the user's data directory.
     """
 
     def __init__(self, log_path: pathlib.Path, ros_args: Sequence[str] = (),
                  cwd: Optional[pathlib.Path] = None):
         self.log_path = pathlib.Path(log_path)
+        ros_args = list(ros_args)
+        if not any(arg.startswith('state_dir:=') for arg in ros_args):
+            ros_args += ['-p', f'state_dir:={self.log_path.parent / "state"}']
         self._log = open(self.log_path, 'w')
         self.process = subprocess.Popen(
             [sys.executable, '-m', 'armor_client.cli', 'serve', '--ros-args', *ros_args],

@@ -25,7 +25,9 @@ TIMEOUT = 211
 
 # Settings handed to the core at start; the names are the core's configuration keys.
 _CORE_SETTINGS = ('full_entity_iri', 'default_reasoner', 'allowed_dirs', 'web_loading',
-                  'lock_wait_ms', 'reasoner_timeout_ms', 'mount_lease_s')
+                  'lock_wait_ms', 'reasoner_timeout_ms', 'mount_lease_s', 'state_dir',
+                  'restore_state', 'journal_fsync', 'checkpoint_every_changes',
+                  'checkpoint_every_s')
 
 
 class ArmorService(Node):
@@ -34,9 +36,11 @@ class ArmorService(Node):
     def __init__(self):
         super().__init__('armor_service')
         self._declare_parameters()
+        settings = {name: self._value(name) for name in _CORE_SETTINGS}
+        settings['state_dir'] = settings['state_dir'] or self._default_state_dir()
         self._core = CoreProcess(
-            self._core_jar(), {name: self._value(name) for name in _CORE_SETTINGS},
-            jvm_options=tuple(self._value('jvm_options')), logger=self.get_logger(),
+            self._core_jar(), settings, jvm_options=tuple(self._value('jvm_options')),
+            start_timeout_s=self._value('core_start_timeout_s'), logger=self.get_logger(),
             on_ready=self._preload)
         self._core.start()
         # Each callback blocks until the core answers. A reentrant group on a multi-threaded
@@ -119,6 +123,12 @@ class ArmorService(Node):
         self.get_logger().info(f'preloaded {path} as reference '
                                f'"{self._value("preload_reference")}"')
 
+    def _default_state_dir(self) -> str:
+        """One directory per node name, so that two nodes never replay each other's journals."""
+        data_home = os.environ.get('XDG_DATA_HOME') or os.path.expanduser('~/.local/share')
+        node = self.get_fully_qualified_name().strip('/').replace('/', '__')
+        return os.path.join(data_home, 'armor_ros2', node)
+
     def _core_jar(self) -> str:
         jar = self._value('core_jar') or os.environ.get('ARMOR_CORE_JAR', '')
         if not jar or not os.path.isfile(jar):
@@ -141,6 +151,15 @@ class ArmorService(Node):
             'lock_wait_ms': (30000, 'longest wait for a reference another directive is using'),
             'reasoner_timeout_ms': (0, 'time limit handed to the reasoners (0 = none)'),
             'mount_lease_s': (0, 'release a mount whose holder sent nothing for this long'),
+            'state_dir': ('', 'journals and checkpoints of every reference (default: '
+                          '$XDG_DATA_HOME/armor_ros2/<node name>)'),
+            'restore_state': (True, 'restore the references found in state_dir at start; '
+                              'false deletes them for a clean start'),
+            'journal_fsync': (True, 'force every journal record to disk before acknowledging '
+                              '(survives power loss, not only a crash)'),
+            'checkpoint_every_changes': (1000, 'checkpoint a reference after this many records'),
+            'checkpoint_every_s': (60, '... or when it changed and its checkpoint is this old'),
+            'core_start_timeout_s': (600.0, 'longest wait for the core to start and restore'),
             'request_timeout_s': (0.0, 'longest wait for the core per request (0 = none)'),
             'core_jar': ('', 'path of armor-core.jar (default: $ARMOR_CORE_JAR)'),
             'jvm_options': (['-Xmx4g', '-XX:+ExitOnOutOfMemoryError'],

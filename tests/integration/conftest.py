@@ -26,11 +26,15 @@ def iris(*names: str) -> list:
 
 
 def start_node(scratch: pathlib.Path, *ros_args: str):
-    """A node preloading robotics.owl as "robotics", allowed to read and write in scratch."""
+    """A node preloading robotics.owl as "robotics", reading and writing in scratch only.
+
+    Its state directory is scratch/state, so it restores nothing but its own earlier state.
+    """
     from armor_client.launch import ArmorNodeProcess
     node = ArmorNodeProcess(scratch / 'armor_service.log', [
         '-p', f'preload_file:={ONTOLOGIES / "robotics.owl"}', '-p', 'preload_reference:=robotics',
-        '-p', f'allowed_dirs:=["{ONTOLOGIES}", "{TEST_ONTOLOGIES}", "{scratch}"]', *ros_args],
+        '-p', f'allowed_dirs:=["{ONTOLOGIES}", "{TEST_ONTOLOGIES}", "{scratch}"]',
+        '-p', f'state_dir:={scratch / "state"}', *ros_args],
         cwd=scratch)
     node.scratch = scratch
     return node
