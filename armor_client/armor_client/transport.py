@@ -8,9 +8,10 @@ thread) or uses a node the caller already spins. Every wait has a deadline.
 import itertools
 import os
 import threading
+import time
 from typing import Optional, Sequence
 
-from armor_client.errors import ArmorServiceInternalError
+from armor_client.errors import ArmorCallTimeout, ArmorServiceCallError
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 import rclpy
@@ -59,7 +60,7 @@ class ArmorTransport:
         self._directive = node.create_client(ArmorDirective, prefix + DIRECTIVE_SERVICE)
         self._list = node.create_client(ArmorDirectiveList, prefix + LIST_SERVICE)
         self._service_wait_s = service_wait_s
-        self._ready = False
+        self._ready = set()
 
     def call(self, request: ArmorDirectiveReq,
              timeout_s: Optional[float] = None) -> ArmorDirectiveRes:
@@ -90,20 +91,42 @@ class ArmorTransport:
         self.close()
 
     def _call(self, client, message, timeout_s):
-        if not self._ready:
-            if not client.wait_for_service(timeout_sec=self._service_wait_s):
-                raise ArmorServiceInternalError(
-                    f'service {client.srv_name} not available after {self._service_wait_s:.0f} s;'
-                    ' is the ARMOR node running (armor serve)?')
-            self._ready = True
+        if client.srv_name not in self._ready:
+            self._wait_until_answered(client)
+        return self._send(client, message, timeout_s)
+
+    def _wait_until_answered(self, client) -> None:
+        """Block until the service has answered a harmless request from this client.
+
+        wait_for_service() only proves that requests reach the service. Fast DDS drops a
+        response when the service has not yet matched the client's response reader, which
+        takes longer than its 100 ms grace on a loaded machine; a lost answer to a change is
+        unrecoverable, a lost answer to a read is simply asked again.
+        """
+        deadline = time.monotonic() + self._service_wait_s
+        harmless = (ArmorDirective.Request(armor_request=directive('', '', 'GET', 'ALL', 'REFS'))
+                    if client is self._directive else ArmorDirectiveList.Request())
+        while True:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0 or not client.wait_for_service(timeout_sec=remaining):
+                raise ArmorServiceCallError(
+                    f'service {client.srv_name} did not answer within {self._service_wait_s:.0f}'
+                    ' s; is the ARMOR node running (armor serve)?')
+            try:
+                self._send(client, harmless, min(2.0, max(0.1, remaining)))
+                self._ready.add(client.srv_name)
+                return
+            except ArmorServiceCallError:
+                continue
+
+    def _send(self, client, message, timeout_s):
         done = threading.Event()
         future = client.call_async(message)
         future.add_done_callback(lambda _: done.set())
         if not done.wait(timeout_s):
             client.remove_pending_request(future)
-            raise ArmorServiceInternalError(f'no answer from {client.srv_name} within '
-                                            f'{timeout_s} s')
+            raise ArmorCallTimeout(f'no answer from {client.srv_name} within {timeout_s} s')
         if future.exception() is not None:
-            raise ArmorServiceInternalError(f'call to {client.srv_name} failed: '
-                                            f'{future.exception()}')
+            raise ArmorServiceCallError(f'call to {client.srv_name} failed: '
+                                        f'{future.exception()}')
         return future.result()

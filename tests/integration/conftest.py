@@ -14,7 +14,7 @@ NS = 'http://www.example.org/robotics#'
 
 # One DDS domain per test run, so that parallel runs on one machine never see each other's
 # nodes; it must be chosen before rclpy starts.
-os.environ.setdefault('ROS_DOMAIN_ID', str(random.Random(os.getpid()).randint(1, 100)))
+os.environ.setdefault('ROS_DOMAIN_ID', str(random.Random(os.getpid()).randint(1, 232)))
 
 
 def iri(name: str) -> str:

@@ -14,6 +14,7 @@ import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.model.OWLAxiom;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLClassExpression;
+import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyCreationException;
@@ -52,11 +53,22 @@ final class Inferences {
         }
     }
 
+    /**
+     * Whether the ontology mentions the entity. One it does not mention has no facts, asserted or
+     * inferred; reasoners asked about it anyway answer wrongly (JFact) or fail.
+     */
+    static boolean known(Reference reference, OWLEntity entity) {
+        return entity.isBuiltIn() || reference.ontology().containsEntityInSignature(entity, Imports.INCLUDED);
+    }
+
     static Stream<OWLOntology> closure(Reference reference) {
         return reference.ontology().importsClosure();
     }
 
     static Set<OWLNamedIndividual> instances(Reference reference, OWLClassExpression owlClass, boolean direct) {
+        if (!owlClass.isAnonymous() && !known(reference, owlClass.asOWLClass())) {
+            return Set.of();
+        }
         Stream<OWLNamedIndividual> asserted = owlClass.isAnonymous() ? Stream.empty()
                 : EntitySearcher.getIndividuals(owlClass.asOWLClass(), closure(reference))
                 .filter(i -> i.isNamed()).map(i -> i.asOWLNamedIndividual());
@@ -64,6 +76,9 @@ final class Inferences {
     }
 
     static Set<OWLClass> subClasses(Reference reference, OWLClassExpression owlClass, boolean direct) {
+        if (!owlClass.isAnonymous() && !known(reference, owlClass.asOWLClass())) {
+            return Set.of();
+        }
         Stream<OWLClass> asserted = owlClass.isAnonymous() ? Stream.empty()
                 : EntitySearcher.getSubClasses(owlClass.asOWLClass(), closure(reference))
                 .filter(c -> !c.isAnonymous()).map(OWLClassExpression::asOWLClass);

@@ -141,6 +141,9 @@ final class Queries {
     }
 
     private static Set<OWLClass> types(Reference reference, OWLNamedIndividual individual, boolean direct) {
+        if (!Inferences.known(reference, individual)) {
+            return Set.of();
+        }
         Set<OWLClass> inferred = Inferences.union(Inferences.inferred(reference,
                 r -> r.getTypes(individual, direct).entities()));
         inferred.removeIf(OWLClass::isOWLThing);
@@ -153,6 +156,9 @@ final class Queries {
 
     static Set<OWLNamedIndividual> objectValues(Reference reference, OWLObjectProperty property,
                                                 OWLNamedIndividual individual) {
+        if (!Inferences.known(reference, property) || !Inferences.known(reference, individual)) {
+            return Set.of();
+        }
         return Inferences.union(
                 EntitySearcher.getObjectPropertyValues(individual, property, Inferences.closure(reference))
                         .filter(i -> i.isNamed()).map(i -> i.asOWLNamedIndividual()),
@@ -160,6 +166,9 @@ final class Queries {
     }
 
     static Set<OWLLiteral> dataValues(Reference reference, OWLDataProperty property, OWLNamedIndividual individual) {
+        if (!Inferences.known(reference, property) || !Inferences.known(reference, individual)) {
+            return Set.of();
+        }
         return Inferences.union(
                 EntitySearcher.getDataPropertyValues(individual, property, Inferences.closure(reference)),
                 Inferences.inferred(reference, r -> r.getDataPropertyValues(individual, property).stream()));

@@ -9,6 +9,7 @@ import java.util.Set;
 import java.util.regex.Pattern;
 import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.expression.OWLEntityChecker;
+import org.semanticweb.owlapi.functional.parser.OWLFunctionalSyntaxOWLParserFactory;
 import org.semanticweb.owlapi.io.OWLParserException;
 import org.semanticweb.owlapi.io.StringDocumentSource;
 import org.semanticweb.owlapi.manchestersyntax.parser.ManchesterOWLSyntax;
@@ -28,6 +29,7 @@ import org.semanticweb.owlapi.model.OWLObject;
 import org.semanticweb.owlapi.model.OWLObjectProperty;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyCreationException;
+import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.SWRLRule;
 import org.semanticweb.owlapi.model.parameters.Imports;
 import org.semanticweb.owlapi.util.OntologyAxiomPair;
@@ -46,6 +48,11 @@ final class Syntax {
     private static final Pattern SWRLB_PREFIXED = Pattern.compile("\\bswrlb:([A-Za-z]+)\\s*\\(");
     private static final int EXPECTED_TOKENS_SHOWN = 12;
     private static final String SWRL_BUILT_INS = "http://www.w3.org/2003/11/swrlb#";
+    // The OWL API parser reads a missing operand ("isIn some", "not") as owl:Thing instead of
+    // failing; an operator with nothing after it is refused here, before parsing.
+    private static final Pattern DANGLING_OPERATOR = Pattern.compile(
+            "(?i)\\b(not|some|only|value|and|or|that|inverse|(?:min|max|exactly)(?:\\s+\\d+)?)\\s*(?=$|[)\\],])");
+    private static final Pattern FUNCTIONAL_POSITION = Pattern.compile("line (\\d+), column (\\d+)");
     private static final Pattern FUNCTIONAL_AXIOM = Pattern.compile("^\\s*[A-Z][A-Za-z]*\\s*\\(.*", Pattern.DOTALL);
 
     private Syntax() {}
@@ -85,6 +92,15 @@ final class Syntax {
     }
 
     private static ManchesterOWLSyntaxParser parser(Reference reference, String text) {
+        java.util.regex.Matcher dangling = DANGLING_OPERATOR.matcher(text);
+        if (dangling.find()) {
+            String before = text.substring(0, dangling.end());
+            int line = (int) before.chars().filter(c -> c == '\n').count() + 1;
+            int column = dangling.end() - before.lastIndexOf('\n');
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + text + "': no operand after '"
+                    + dangling.group(1) + "' at line " + line + " column " + column + ". Expected one of: Class name"
+                    + " Object property name Data property name ( {");
+        }
         ManchesterOWLSyntaxParser parser = OWLManager.createManchesterParser();
         parser.setDefaultOntology(reference.ontology());
         parser.setOWLEntityChecker(new ReferenceEntityChecker(reference));
@@ -98,6 +114,26 @@ final class Syntax {
         } catch (OWLParserException e) {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + text + "': " + shortened(e), e);
         }
+    }
+
+    /** The functional parser's complaint with its position in the client's text, not in the wrapper. */
+    private static String functionalError(OWLOntologyCreationException e, int linesBefore, String text) {
+        String message = String.valueOf(e.getMessage());
+        String complaint = message.lines().filter(l -> l.contains("Encountered") || l.contains("Lexical error"))
+                .findFirst().orElse(message.lines().findFirst().orElse("")).trim();
+        complaint = FUNCTIONAL_POSITION.matcher(complaint).replaceAll("").trim();
+        java.util.regex.Matcher position = FUNCTIONAL_POSITION.matcher(message);
+        if (position.find()) {
+            int line = Integer.parseInt(position.group(1)) - linesBefore;
+            List<String> lines = text.lines().toList();
+            if (line >= 1 && line <= lines.size()) {
+                complaint += " at line " + line + " column " + position.group(2);
+            } else {
+                complaint = "unexpected end of the axiom at line " + Math.max(1, lines.size()) + " column "
+                        + (lines.isEmpty() ? 1 : lines.get(lines.size() - 1).length() + 1);
+            }
+        }
+        return complaint.length() > 300 ? complaint.substring(0, 300) + " ..." : complaint;
     }
 
     /** The parser's position and the first expected tokens; its full list can name hundreds of built-ins. */
@@ -119,15 +155,18 @@ final class Syntax {
         reference.names().prefixes().forEach((name, namespace) ->
                 document.append("Prefix(").append(name).append(":=<").append(namespace).append(">)\n"));
         document.append("Prefix(:=<").append(reference.names().defaultNamespace()).append(">)\n");
-        document.append("Ontology(\n").append(text).append("\n)\n");
+        document.append("Ontology(\n");
+        int linesBefore = (int) document.chars().filter(c -> c == '\n').count();
+        document.append(text).append("\n)\n");
         OWLOntology parsed;
         try {
-            parsed = OWLManager.createOWLOntologyManager().loadOntologyFromOntologyDocument(
-                    new StringDocumentSource(document.toString(), "urn:armor:axiom",
-                            new org.semanticweb.owlapi.formats.FunctionalSyntaxDocumentFormat(), null));
+            OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
+            manager.setOntologyParsers(Set.of(new OWLFunctionalSyntaxOWLParserFactory()));
+            parsed = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(document.toString(),
+                    "urn:armor:axiom", new org.semanticweb.owlapi.formats.FunctionalSyntaxDocumentFormat(), null));
         } catch (OWLOntologyCreationException e) {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse functional-syntax axiom '" + text + "': "
-                    + String.valueOf(e.getMessage()).replaceAll("\\s+", " ").trim(), e);
+                    + functionalError(e, linesBefore, text), e);
         }
         List<OWLAxiom> axioms = parsed.axioms().filter(a -> !a.isOfType(org.semanticweb.owlapi.model.AxiomType.DECLARATION))
                 .toList();

@@ -68,6 +68,7 @@ public final class Reference {
 
     private final List<OWLOntologyChange> pending = new ArrayList<>();
     private OWLReasoner reasoner;
+    private boolean removedSinceSync;
     private boolean consistent = true;
     private String mountedBy = "";
     private Transaction transaction;
@@ -219,10 +220,7 @@ public final class Reference {
     /** REASON: apply the queue, bring the reasoner up to date, recompute consistency and inferences. */
     public void reason() {
         applyPending();
-        guardReasoner(() -> {
-            reasoner.flush();
-            return null;
-        });
+        bringReasonerUpToDate();
         refreshConsistency();
         if (consistent) {
             precompute(InferenceType.CLASS_HIERARCHY);
@@ -294,6 +292,7 @@ public final class Reference {
             reversed.add(undo.enacted.get(i).reverseChange());
         }
         manager.applyChanges(reversed);
+        removedSinceSync |= reversed.stream().anyMatch(OWLOntologyChange::isRemoveAxiom);
         if (undo.pendingBefore != null) {
             pending.clear();
             pending.addAll(undo.pendingBefore);
@@ -310,6 +309,7 @@ public final class Reference {
             return;
         }
         List<OWLOntologyChange> enacted = new ArrayList<>(manager.applyChangesAndGetDetails(changes).getEnactedChanges());
+        removedSinceSync |= enacted.stream().anyMatch(OWLOntologyChange::isRemoveAxiom);
         if (transaction != null) {
             transaction.enacted.addAll(enacted);
         }
@@ -323,11 +323,41 @@ public final class Reference {
      * a restore this makes even a buffered reasoner see everything that was replayed.
      */
     public void synchroniseReasoner() {
-        guardReasoner(() -> {
-            reasoner.flush();
-            return null;
-        });
+        bringReasonerUpToDate();
         refreshConsistency();
+    }
+
+    /**
+     * Flushes the reasoner, or replaces it where incremental updates are known to go wrong:
+     * Openllet and JFact keep inferences of removed axioms, and HermiT refuses assertions
+     * whose property was not in the ontology when it was created. ELK updates itself correctly.
+     */
+    private void bringReasonerUpToDate() {
+        if (removedSinceSync && !reasonerName.equals("ELK")) {
+            rebuildReasoner();
+            return;
+        }
+        try {
+            guardReasoner(() -> {
+                reasoner.flush();
+                return null;
+            });
+        } catch (ArmorException e) {
+            if (e.exitCode() != ExitCode.REASONER_FAILED) {
+                throw e;
+            }
+            rebuildReasoner();
+        }
+    }
+
+    private void rebuildReasoner() {
+        try {
+            reasoner.dispose();
+        } catch (RuntimeException e) {
+            // a reasoner that failed may not dispose cleanly; it is replaced either way
+        }
+        reasoner = createReasoner();
+        removedSinceSync = false;
     }
 
     private <T> T withinTimeLimit(Supplier<T> call) {
@@ -344,12 +374,7 @@ public final class Reference {
     }
 
     private ArmorException overran(RuntimeException cause) {
-        try {
-            reasoner.dispose();
-        } catch (RuntimeException e) {
-            // the interrupted reasoner may be half torn down; it is replaced either way
-        }
-        reasoner = createReasoner();
+        rebuildReasoner();
         return new ArmorException(ExitCode.TIMEOUT, reasonerName + " exceeded the reasoner time limit of "
                 + reasonerTimeoutMs + " ms on reference '" + name + "' and was interrupted; the reference is"
                 + " usable and its reasoner starts afresh", cause);
