@@ -75,7 +75,7 @@ class Campaign:
                                timeout_s=CALL_TIMEOUT_S)
 
     def write(self) -> None:
-        from armor_client import ArmorServiceInternalError, directive
+        from armor_client import ArmorError, directive
         i = 0
         while not self.stop.is_set():
             i += 1
@@ -96,7 +96,7 @@ class Campaign:
                 else:
                     if self._call('ADD', 'IND', 'CLASS', f'single{i}', 'Robot').success:
                         self.singles.add(i)
-            except ArmorServiceInternalError:
+            except ArmorError:
                 self.audit.unanswered += 1
 
     def kill_once(self) -> None:

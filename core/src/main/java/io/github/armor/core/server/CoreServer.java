@@ -93,9 +93,10 @@ public final class CoreServer {
                 case "ping" -> reply.addProperty("pong", true);
                 default -> reply.addProperty("error", "unknown op '" + op + "'");
             }
-        } catch (RuntimeException e) {
-            LOG.error("malformed request", e);
-            reply.addProperty("error", "malformed request: " + e);
+        } catch (RuntimeException | LinkageError | StackOverflowError e) {
+            // Whatever went wrong, the request is answered: a caller must never wait forever.
+            LOG.error("request failed", e);
+            reply.addProperty("error", "request failed in the core: " + e);
         }
         return reply;
     }
