@@ -7,6 +7,7 @@ import io.github.armor.core.api.Response;
 import io.github.armor.core.reference.Reference;
 import java.util.List;
 import java.util.Set;
+import java.util.function.BiFunction;
 import java.util.stream.Stream;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLClassExpression;
@@ -15,8 +16,10 @@ import org.semanticweb.owlapi.model.OWLLiteral;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLObjectProperty;
 import org.semanticweb.owlapi.model.OWLObjectPropertyExpression;
+import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLRestriction;
 import org.semanticweb.owlapi.model.parameters.Imports;
+import org.semanticweb.owlapi.reasoner.OWLReasoner;
 import org.semanticweb.owlapi.search.EntitySearcher;
 
 /** Contract 5.3: every question, answered from asserted plus inferred knowledge, sorted. */
@@ -75,32 +78,12 @@ final class Queries {
         table.command("QUERY CLASS DL").args("class expression").query(c -> c.ok(c.render().entities(
                 Inferences.subClasses(c.reference(), Syntax.classExpression(c.reference(), c.arg(0)), false)
                         .stream())));
-        table.command("QUERY CLASS SUPER").args("class").query(c -> {
-            OWLClass owlClass = c.owlClass(0);
-            Set<OWLClass> supers = Inferences.union(
-                    EntitySearcher.getSuperClasses(owlClass, Inferences.closure(c.reference()))
-                            .filter(e -> !e.isAnonymous()).map(OWLClassExpression::asOWLClass),
-                    Inferences.inferred(c.reference(), r -> r.getSuperClasses(owlClass, false).entities()));
-            return c.ok(c.render().entities(supers.stream()));
-        });
-        table.command("QUERY CLASS EQUIVALENT").args("class").query(c -> {
-            OWLClass owlClass = c.owlClass(0);
-            Set<OWLClass> equivalent = Inferences.union(
-                    EntitySearcher.getEquivalentClasses(owlClass, Inferences.closure(c.reference()))
-                            .filter(e -> !e.isAnonymous()).map(OWLClassExpression::asOWLClass),
-                    Inferences.inferred(c.reference(), r -> r.getEquivalentClasses(owlClass).entities()));
-            equivalent.remove(owlClass);
-            return c.ok(c.render().entities(equivalent.stream()));
-        });
-        table.command("QUERY CLASS DISJOINT").args("class").query(c -> {
-            OWLClass owlClass = c.owlClass(0);
-            Set<OWLClass> disjoint = Inferences.union(
-                    EntitySearcher.getDisjointClasses(owlClass, Inferences.closure(c.reference()))
-                            .filter(e -> !e.isAnonymous()).map(OWLClassExpression::asOWLClass),
-                    Inferences.inferred(c.reference(), r -> r.getDisjointClasses(owlClass).entities()));
-            disjoint.remove(owlClass);
-            return c.ok(c.render().entities(disjoint.stream()));
-        });
+        classRelation(table, "QUERY CLASS SUPER", EntitySearcher::getSuperClasses,
+                (r, owlClass) -> r.getSuperClasses(owlClass, false).entities());
+        classRelation(table, "QUERY CLASS EQUIVALENT", EntitySearcher::getEquivalentClasses,
+                (r, owlClass) -> r.getEquivalentClasses(owlClass).entities());
+        classRelation(table, "QUERY CLASS DISJOINT", EntitySearcher::getDisjointClasses,
+                (r, owlClass) -> r.getDisjointClasses(owlClass).entities());
         table.command("QUERY CLASS RESTRICTIONS").args("class").query(c -> {
             OWLClass owlClass = c.owlClass(0);
             Stream<OWLClassExpression> definitions = Stream.concat(
@@ -111,6 +94,21 @@ final class Queries {
                     .map(e -> Syntax.render(c.reference(), c.config().fullEntityIri(), e))
                     .distinct().sorted().toList();
             return c.ok(restrictions);
+        });
+    }
+
+    /** A query answering the named classes related to a class: asserted ones plus inferred ones. */
+    private static void classRelation(CommandTable table, String words,
+                                      BiFunction<OWLClass, Stream<OWLOntology>, Stream<OWLClassExpression>> asserted,
+                                      BiFunction<OWLReasoner, OWLClass, Stream<OWLClass>> inferred) {
+        table.command(words).args("class").query(c -> {
+            OWLClass owlClass = c.owlClass(0);
+            Set<OWLClass> related = Inferences.union(
+                    asserted.apply(owlClass, Inferences.closure(c.reference()))
+                            .filter(e -> !e.isAnonymous()).map(OWLClassExpression::asOWLClass),
+                    Inferences.inferred(c.reference(), r -> inferred.apply(r, owlClass)));
+            related.remove(owlClass);
+            return c.ok(c.render().entities(related.stream()));
         });
     }
 
