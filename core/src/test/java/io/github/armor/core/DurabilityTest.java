@@ -138,10 +138,9 @@ class DurabilityTest {
         }
     }
 
+    /** The checkpoint recovery would start from: the one meta.json names. */
     private long checkpointNumber() throws Exception {
-        try (Stream<Path> files = Files.walk(stateDir)) {
-            return files.map(f -> f.getFileName().toString()).filter(n -> n.matches("checkpoint-\\d+\\.ofn"))
-                    .mapToLong(n -> Long.parseLong(n.replaceAll("\\D", ""))).max().orElse(0);
-        }
+        String meta = Files.readString(stateDir.resolve("refs").resolve("map").resolve("meta.json"));
+        return com.google.gson.JsonParser.parseString(meta).getAsJsonObject().get("checkpoint").getAsLong();
     }
 }
