@@ -226,6 +226,9 @@ class CoreProcess:
             connection.close()
         if process and process.poll() is None:
             process.kill()
+        if process:
+            # The next core must not start while this one can still write to the state directory.
+            process.wait()
         self._log.error(reason)
         if restart:
             self._log.error('starting a new core')

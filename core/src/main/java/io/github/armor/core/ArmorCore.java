@@ -29,7 +29,7 @@ import org.slf4j.LoggerFactory;
  * response out. Every failure becomes an exit code here; nothing a client sends escapes as an
  * exception. Thread-safe: directives on different references run in parallel.
  */
-public final class ArmorCore {
+public final class ArmorCore implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(ArmorCore.class);
 
     private final CoreConfig config;
@@ -89,6 +89,14 @@ public final class ArmorCore {
             }
         } finally {
             replaying.set(false);
+        }
+    }
+
+    /** Finishes writing state and releases the state directory; the core answers nothing afterwards. */
+    @Override
+    public void close() {
+        if (state != null) {
+            state.close();
         }
     }
 

@@ -24,10 +24,20 @@ class DurabilityTest {
     @TempDir
     Path stateDir;
 
+    private final java.util.List<ArmorCore> cores = new java.util.ArrayList<>();
+
+    @org.junit.jupiter.api.AfterEach
+    void closeCores() {
+        cores.forEach(ArmorCore::close);
+    }
+
+    /** A core on the state directory; the previous one is closed first, as a restart does. */
     private ArmorCore core(boolean restore, int checkpointEvery) {
+        cores.forEach(ArmorCore::close);
         ArmorCore core = new ArmorCore(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES), false, 30_000,
                 0, 0, new CoreConfig.Durability(stateDir, restore, true, checkpointEvery, 3600)));
         core.restoreState();
+        cores.add(core);
         return core;
     }
 

@@ -190,6 +190,14 @@ final class ReferenceStore {
         }
     }
 
+    synchronized void close() {
+        try {
+            journal.close();
+        } catch (IOException e) {
+            LOG.warn("closing the journal of '{}' failed: {}", name, e.toString());
+        }
+    }
+
     synchronized void delete() throws IOException {
         journal.close();
         try (Stream<Path> files = Files.walk(dir)) {

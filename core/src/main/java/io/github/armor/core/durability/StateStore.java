@@ -8,9 +8,12 @@ import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.Reference;
 import java.io.IOException;
+import java.nio.channels.FileChannel;
+import java.nio.channels.FileLock;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -30,7 +33,10 @@ import org.slf4j.LoggerFactory;
 public final class StateStore {
     private static final Logger LOG = LoggerFactory.getLogger(StateStore.class);
 
+    private static final long LOCK_WAIT_NANOS = 10_000_000_000L;
+
     private final Path refsDir;
+    private FileLock stateLock;
     private final Durability durability;
     private final ConcurrentHashMap<String, ReferenceStore> stores = new ConcurrentHashMap<>();
     private final ExecutorService checkpointWriter = Executors.newSingleThreadExecutor(r -> {
@@ -55,6 +61,7 @@ public final class StateStore {
     public List<Restorable> recoverAll(OntologyFiles files) {
         List<Restorable> found = new ArrayList<>();
         try {
+            lockStateDirectory();
             if (!durability.restore()) {
                 deleteTree(refsDir);
             }
@@ -82,6 +89,30 @@ public final class StateStore {
             throw new IllegalStateException("state directory " + refsDir + " is unusable: " + e, e);
         }
         return found;
+    }
+
+    /**
+     * Holds the state directory for this process's lifetime: two cores replaying and writing the
+     * same journals would corrupt them. A predecessor that is still dying gets a few seconds.
+     */
+    private void lockStateDirectory() throws IOException {
+        Files.createDirectories(durability.stateDir());
+        FileChannel channel = FileChannel.open(durability.stateDir().resolve("lock"), StandardOpenOption.CREATE,
+                StandardOpenOption.WRITE);
+        long deadline = System.nanoTime() + LOCK_WAIT_NANOS;
+        while ((stateLock = channel.tryLock()) == null) {
+            if (System.nanoTime() > deadline) {
+                channel.close();
+                throw new IllegalStateException("state directory " + durability.stateDir()
+                        + " is in use by another ARMOR core; give each node its own state_dir");
+            }
+            try {
+                Thread.sleep(100);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IOException("interrupted while waiting for the state directory", e);
+            }
+        }
     }
 
     /** Takes over the files of a restored reference for its further changes. */
@@ -129,6 +160,28 @@ public final class StateStore {
             store.delete();
         } catch (IOException e) {
             LOG.error("could not delete the state of dropped reference '{}'", reference.name(), e);
+        }
+    }
+
+    /** Lets checkpoints in progress finish, closes the journals and releases the directory. */
+    public synchronized void close() {
+        checkpointWriter.shutdown();
+        try {
+            if (!checkpointWriter.awaitTermination(60, java.util.concurrent.TimeUnit.SECONDS)) {
+                LOG.warn("a checkpoint was still being written at close; the previous one stays in use");
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        stores.values().forEach(ReferenceStore::close);
+        stores.clear();
+        if (stateLock != null) {
+            try {
+                stateLock.channel().close();
+            } catch (IOException e) {
+                LOG.warn("could not release the state directory lock: {}", e.toString());
+            }
+            stateLock = null;
         }
     }
 
