@@ -17,8 +17,17 @@ run: setup  ## start the service with the robotics ontology preloaded as referen
 	source install/setup.bash && armor serve --ros-args \
 	  -p preload_file:=$(ROBOTICS) -p preload_reference:=robotics
 
+.PHONY: demo
+demo: setup  ## run the surveillance tutorial against a running service (make run first)
+	source install/setup.bash && python examples/surveillance_demo.py
+
 test: setup  ## run the whole test suite: JUnit (core) and pytest (node over real ROS 2)
 	bash tools/test.sh
+
+.PHONY: bench
+bench: setup  ## run the benchmark suite and write bench/REPORT.md
+	source install/setup.bash && python -m pip install -q -r bench/requirements.txt \
+	  && mvn -B -q -o -f core/pom.xml test-compile && python bench/suite.py
 
 clean:  ## remove build products (keeps the Maven and pip caches)
 	rm -rf .venv build install log core/target

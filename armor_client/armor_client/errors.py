@@ -1,25 +1,123 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-"""Exceptions raised by the client; the names are those of ROS 1 ARMOR's armor_api."""
+"""Exceptions raised by the client.
+
+The two classes ROS 1 ARMOR's armor_api had keep their names and their meaning:
+``ArmorServiceCallError`` when the service could not be called at all, and
+``ArmorServiceInternalError`` when ARMOR answered that a directive failed (it carries the exit
+code). The subclasses of ``ArmorServiceInternalError`` group the exit codes by what a program
+usually does about them, so ``except ArmorUnknownReferenceError`` reads better than comparing
+codes; every one of them is still an ``ArmorServiceInternalError``.
+"""
+
+from typing import Any, Dict, Optional, Type
 
 
 class ArmorError(Exception):
-    """Base of every error the ARMOR client raises."""
+    """Base of every error the ARMOR client raises.
+
+    Attributes:
+        exit_code: ARMOR's exit code, or None when the service never answered.
+        description: what went wrong, in words.
+    """
+
+    def __init__(self, description: str, exit_code: Optional[int] = None):
+        super().__init__(description if exit_code is None else f'{exit_code}: {description}')
+        self.exit_code = exit_code
+        self.description = description
+
+    @property
+    def msg(self) -> str:
+        """The description (the attribute name of ROS 1 armor_api's exceptions)."""
+        return self.description
 
 
 class ArmorServiceCallError(ArmorError):
-    """The service answered, and the directive failed: carries ARMOR's exit code."""
+    """The service could not be called: not running, no answer in time, or the call broke."""
 
-    def __init__(self, exit_code: int, description: str, timeout: bool = False):
-        super().__init__(f'{exit_code}: {description}')
-        self.exit_code = exit_code
-        self.description = description
-        self.timeout = timeout
+    def __init__(self, description: str):
+        super().__init__(description)
+
+
+class ArmorCallTimeout(ArmorServiceCallError, TimeoutError):
+    """The service did not answer within the client's time limit."""
 
 
 class ArmorServiceInternalError(ArmorError):
-    """The service could not be reached or did not answer in time."""
+    """ARMOR answered, and the directive failed.
 
-    def __init__(self, description: str, exit_code: int = -1):
-        super().__init__(description)
-        self.exit_code = exit_code
-        self.description = description
+    Args:
+        description: ARMOR's error_description.
+        exit_code: ARMOR's exit code (see docs/commands.md#exit-codes); None when a check of
+            the client itself failed before anything was sent.
+        timeout: the response's timeout flag (a time limit of the service was reached).
+        response: the whole ArmorDirectiveRes, when there is one.
+    """
+
+    def __init__(self, description: str, exit_code: Optional[int] = None, timeout: bool = False,
+                 response: Any = None):
+        super().__init__(description, exit_code)
+        self.timeout = timeout
+        self.response = response
+
+    @property
+    def code(self) -> Optional[int]:
+        """The exit code (the attribute name of ROS 1 armor_api's exceptions)."""
+        return self.exit_code
+
+
+class ArmorMountError(ArmorServiceInternalError):
+    """102 (another client holds the mount, nothing changed) or 203 (mount refused)."""
+
+
+class ArmorArgumentError(ArmorServiceInternalError):
+    """The directive itself is wrong: 101, 201, 202, 205, 207, 208 or 215."""
+
+
+class ArmorUnknownReferenceError(ArmorServiceInternalError):
+    """206: no reference is loaded under that name."""
+
+
+class ArmorFileError(ArmorServiceInternalError):
+    """An ontology could not be read or written: 209, 213, 214 or 218."""
+
+
+class ArmorReasonerError(ArmorServiceInternalError):
+    """The reasoner failed, cannot answer, or the ontology is inconsistent: 210, 217, 219."""
+
+
+class ArmorTimeLimitError(ArmorServiceInternalError, TimeoutError):
+    """211: a time limit of the service (lock wait, reasoner, SPARQL) was reached."""
+
+
+class ArmorRolledBackError(ArmorServiceInternalError):
+    """212: undone or not run because another directive of the same list failed."""
+
+
+class ArmorCoreUnavailableError(ArmorServiceInternalError):
+    """216: the knowledge core is restarting; the same directive may succeed when retried."""
+
+
+_CLASS_OF_CODE: Dict[int, Type[ArmorServiceInternalError]] = {
+    **dict.fromkeys((102, 203), ArmorMountError),
+    **dict.fromkeys((101, 201, 202, 205, 207, 208, 215), ArmorArgumentError),
+    206: ArmorUnknownReferenceError,
+    **dict.fromkeys((209, 213, 214, 218), ArmorFileError),
+    **dict.fromkeys((210, 217, 219), ArmorReasonerError),
+    211: ArmorTimeLimitError,
+    212: ArmorRolledBackError,
+    216: ArmorCoreUnavailableError,
+}
+
+
+def error_for(response: Any) -> ArmorServiceInternalError:
+    """The exception that describes a failed ArmorDirectiveRes.
+
+    Args:
+        response: an ArmorDirectiveRes with success=False.
+
+    Returns:
+        An instance of the ArmorServiceInternalError subclass for its exit code (the base class
+        for codes this client does not know).
+    """
+    error_class = _CLASS_OF_CODE.get(response.exit_code, ArmorServiceInternalError)
+    return error_class(response.error_description, response.exit_code, response.timeout, response)

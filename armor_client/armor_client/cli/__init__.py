@@ -6,7 +6,7 @@ import importlib
 import signal
 import sys
 
-VERBS = ('serve', 'call')
+VERBS = ('serve', 'call', 'load', 'query', 'sparql', 'save', 'refs', 'shell')
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -29,7 +29,7 @@ def main(argv=None) -> int:
     # After a lone "--" come directive arguments, after "--ros-args" ROS arguments: either may
     # start with "-", so they bypass argparse.
     trailing = []
-    marker = {'call': '--', 'serve': '--ros-args'}.get(argv[0] if argv else '')
+    marker = {'call': '--', 'query': '--', 'serve': '--ros-args'}.get(argv[0] if argv else '')
     if marker in argv:
         split = argv.index(marker)
         argv, trailing = argv[:split], argv[split + (marker == '--'):]

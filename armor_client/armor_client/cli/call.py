@@ -15,7 +15,7 @@ import argparse
 import json
 import sys
 
-from armor_client.errors import ArmorServiceInternalError
+from armor_client.errors import ArmorServiceCallError
 from armor_client.transport import ArmorTransport, directive
 
 
@@ -43,7 +43,7 @@ def run(args) -> int:
     try:
         with ArmorTransport(namespace=args.namespace, service_wait_s=args.wait) as armor:
             response = armor.call(request, timeout_s=args.timeout)
-    except ArmorServiceInternalError as error:
+    except ArmorServiceCallError as error:
         print(f'armor call: {error}', file=sys.stderr)
         return 2
     print_response(response, as_json=args.json)

@@ -1,0 +1,341 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""The asyncio client: the same methods as Armor and Reference, each one awaitable.
+
+>>> import asyncio
+>>> from armor_client.aio import AsyncArmor
+>>> async def main():                                                    # doctest: +SKIP
+...     async with AsyncArmor('planner') as armor:
+...         robotics = armor.reference('robotics')
+...         rooms, robots = await asyncio.gather(robotics.instances('Room'),
+...                                              robotics.instances('Robot'))
+>>> asyncio.run(main())                                                  # doctest: +SKIP
+
+Each directive waits for its answer on a worker thread of this object's own pool (rclpy's
+service client is not asyncio-native), so the event loop keeps running and up to
+``max_concurrent`` directives are in flight at once. A cancelled await stops waiting; the
+directive itself has already been sent and still runs.
+"""
+
+import asyncio
+import concurrent.futures
+import contextlib
+import functools
+from typing import Any, AsyncIterator, List, Optional, Sequence, Union
+
+from armor_client.batch import BatchBase
+from armor_client.errors import ArmorMountError, error_for
+from armor_client.operations import (Answers, Manipulations, Queries, Reasoner, ReferenceCommands,
+                                     Words)
+from armor_client.reference import default_client_name, load_args, reasoning_args
+from armor_client.transport import ArmorTransport, directive
+from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
+from rclpy.node import Node
+
+
+class AsyncArmor:
+    """The asyncio twin of Armor: same arguments, same methods, each a coroutine.
+
+    Args:
+        client_name: the name this program uses in directives; None picks one per process.
+        namespace: the namespace of the ARMOR node.
+        node: a node this program already spins on another thread; None to create one.
+        timeout_s: longest wait for each answer (None: as long as it takes).
+        service_wait_s: how long the first call waits for the service to appear.
+        iris: answer entities as full IRIs instead of short names.
+        transport: an ArmorTransport to share.
+        max_concurrent: how many directives may wait for their answers at once.
+    """
+
+    def __init__(self, client_name: Optional[str] = None, *, namespace: str = '',
+                 node: Optional[Node] = None, timeout_s: Optional[float] = 60.0,
+                 service_wait_s: float = 30.0, iris: bool = False,
+                 transport: Optional[ArmorTransport] = None, max_concurrent: int = 8):
+        self.client_name = client_name or default_client_name()
+        self.timeout_s = timeout_s
+        self.iris = iris
+        self._owns_transport = transport is None
+        self.transport = transport or ArmorTransport(node=node, namespace=namespace,
+                                                     service_wait_s=service_wait_s)
+        self._pool = concurrent.futures.ThreadPoolExecutor(max_concurrent,
+                                                           thread_name_prefix='armor-aio')
+
+    def reference(self, name: str, iris: Optional[bool] = None) -> 'AsyncReference':
+        """The awaitable object for a reference (nothing is sent yet).
+
+        Args:
+            name: the reference name.
+            iris: answer entities as IRIs (default: this session's setting).
+
+        Returns:
+            An AsyncReference.
+        """
+        return AsyncReference(self, name, self.iris if iris is None else iris)
+
+    async def load_file(self, name: str, path: str, iri: str = '', *,
+                        reasoner: Union[Reasoner, str] = '', buffered_manipulation: bool = False,
+                        buffered_reasoner: bool = False,
+                        mount: bool = False) -> 'AsyncReference':
+        """Load an ontology file as a new reference; see Armor.load_file.
+
+        Args:
+            name: the reference name.
+            path: the file, as the node sees it.
+            iri: the ontology IRI ('' = the file's own).
+            reasoner: HERMIT, PELLET, JFACT, ELK or '' for the node's default.
+            buffered_manipulation: queue changes until apply() or reason().
+            buffered_reasoner: the reasoner sees changes only at reason().
+            mount: also mount this client on it.
+
+        Returns:
+            The AsyncReference.
+
+        Raises:
+            ArmorFileError: the file cannot be loaded.
+        """
+        arguments = load_args(path, iri, buffered_manipulation, reasoner, buffered_reasoner)
+        spec = 'MOUNTED' if mount else ''
+        response = self._require(await self.call(name, 'LOAD', 'FILE', spec, arguments))
+        return self._loaded(name, response)
+
+    async def load_web(self, name: str, url: str, iri: str = '', *,
+                       reasoner: Union[Reasoner, str] = '', buffered_manipulation: bool = False,
+                       buffered_reasoner: bool = False,
+                       mount: bool = False) -> 'AsyncReference':
+        """Load an ontology from a URL as a new reference; see Armor.load_web.
+
+        Args:
+            name: the reference name.
+            url: where the ontology is.
+            iri: as for load_file.
+            reasoner: as for load_file.
+            buffered_manipulation: as for load_file.
+            buffered_reasoner: as for load_file.
+            mount: as for load_file.
+
+        Returns:
+            The AsyncReference.
+
+        Raises:
+            ArmorFileError: web loading is off (218) or the download failed.
+        """
+        arguments = load_args(url, iri, buffered_manipulation, reasoner, buffered_reasoner)
+        spec = 'MOUNTED' if mount else ''
+        response = self._require(await self.call(name, 'LOAD', 'WEB', spec, arguments))
+        return self._loaded(name, response)
+
+    async def create(self, name: str, iri: str, *, reasoner: Union[Reasoner, str] = '',
+                     buffered_manipulation: bool = False,
+                     buffered_reasoner: bool = False) -> 'AsyncReference':
+        """Create a reference holding a new, empty ontology; see Armor.create.
+
+        Args:
+            name: the reference name.
+            iri: the ontology IRI.
+            reasoner: as for load_file.
+            buffered_manipulation: as for load_file.
+            buffered_reasoner: as for load_file.
+
+        Returns:
+            The AsyncReference.
+        """
+        arguments = reasoning_args(iri, buffered_manipulation, reasoner, buffered_reasoner)
+        response = self._require(await self.call(name, 'CREATE', '', '', arguments))
+        return self._loaded(name, response)
+
+    async def references(self) -> List[str]:
+        """The names of the loaded references (GET ALL REFS).
+
+        Returns:
+            The names.
+        """
+        return list(self._require(await self.call('', 'GET', 'ALL', 'REFS')).queried_objects)
+
+    async def mounted_by(self, reference: str) -> Optional[str]:
+        """The client that holds a reference's mount (GET REF CLIENT).
+
+        Args:
+            reference: the reference name.
+
+        Returns:
+            The client name, or None.
+        """
+        holders = self._require(await self.call('', 'GET', 'REF', 'CLIENT', [reference]))
+        return holders.queried_objects[0] if holders.queried_objects else None
+
+    async def log_to_screen(self, on: bool) -> None:
+        """Turn logging to the node's screen on or off (LOG SCREEN ON/OFF).
+
+        Args:
+            on: True to log.
+        """
+        self._require(await self.call('', 'LOG', 'SCREEN', 'ON' if on else 'OFF'))
+
+    async def log_to_file(self, path: Optional[str]) -> None:
+        """Log directives to a file, or stop (LOG FILE ON/OFF).
+
+        Args:
+            path: the log file on the node's machine; None stops.
+        """
+        if path is None:
+            self._require(await self.call('', 'LOG', 'FILE', 'OFF'))
+        else:
+            self._require(await self.call('', 'LOG', 'FILE', 'ON', [path]))
+
+    async def call(self, reference: str, command: str, primary: str = '', secondary: str = '',
+                   args: Sequence[Any] = ()) -> ArmorDirectiveRes:
+        """Send any directive as this client; see Armor.call.
+
+        Args:
+            reference: the reference name ('' for none).
+            command: the command word.
+            primary: the primary spec.
+            secondary: the secondary spec.
+            args: the arguments.
+
+        Returns:
+            The raw response, also when the directive failed.
+
+        Raises:
+            ArmorServiceCallError: the service could not be called or did not answer in time.
+        """
+        request = directive(self.client_name, reference, command, primary, secondary, args)
+        return await self._in_pool(self.transport.call, request, timeout_s=self.timeout_s)
+
+    async def call_list(self, requests: Sequence[ArmorDirectiveReq]) -> Any:
+        """Send an atomic list of directives and return the raw list response.
+
+        Args:
+            requests: the directives.
+
+        Returns:
+            The ArmorDirectiveList response.
+
+        Raises:
+            ArmorServiceCallError: the service could not be called or did not answer in time.
+        """
+        return await self._in_pool(self.transport.call_list, requests, timeout_s=self.timeout_s)
+
+    async def close(self) -> None:
+        """Release the worker threads and the transport (when this object created it)."""
+        self._pool.shutdown(wait=True)
+        if self._owns_transport:
+            self.transport.close()
+
+    async def __aenter__(self) -> 'AsyncArmor':
+        return self
+
+    async def __aexit__(self, *exc: Any) -> None:
+        await self.close()
+
+    async def _in_pool(self, function: Any, *args: Any, **kwargs: Any) -> Any:
+        loop = asyncio.get_running_loop()
+        return await loop.run_in_executor(self._pool, functools.partial(function, *args, **kwargs))
+
+    def _loaded(self, name: str, response: ArmorDirectiveRes) -> 'AsyncReference':
+        reference = self.reference(name)
+        reference.consistent = response.is_consistent
+        return reference
+
+    @staticmethod
+    def _require(response: ArmorDirectiveRes) -> ArmorDirectiveRes:
+        if not response.success:
+            raise error_for(response)
+        return response
+
+
+class AsyncReference(Manipulations, Queries, ReferenceCommands):
+    """The asyncio twin of Reference: every method returns an awaitable of Reference's result.
+
+    ``await ref.instances('Room')`` answers what ``Reference.instances('Room')`` answers;
+    ``async with ref.mounted():`` and ``async with ref.batch() as batch:`` work as their sync
+    counterparts do.
+
+    Args:
+        armor: the session that sends the directives.
+        name: the reference name.
+        iris: answer entities as full IRIs instead of short names.
+    """
+
+    def __init__(self, armor: AsyncArmor, name: str, iris: bool = False):
+        self.armor = armor
+        self.name = name
+        self.answers = Answers(iris)
+        self.consistent: Optional[bool] = None
+
+    def __repr__(self) -> str:
+        return f'AsyncReference({self.name!r}, client={self.armor.client_name!r})'
+
+    def mounted_by(self) -> Any:
+        """The client that holds this reference's mount (GET REF CLIENT).
+
+        Returns:
+            An awaitable of the client name or None.
+        """
+        return self.armor.mounted_by(self.name)
+
+    @contextlib.asynccontextmanager
+    async def mounted(self) -> AsyncIterator['AsyncReference']:
+        """Hold the mount for the duration of an async with block.
+
+        Yields:
+            This reference.
+
+        Raises:
+            ArmorMountError: another client holds the mount.
+        """
+        await self.mount()
+        try:
+            yield self
+        except BaseException:
+            # The block's own error is the one to report, not a lost mount (lease, DROP).
+            with contextlib.suppress(ArmorMountError):
+                await self.unmount()
+            raise
+        await self.unmount()
+
+    def batch(self) -> 'AsyncBatch':
+        """A builder for changes sent as one atomic list when ``async with`` ends.
+
+        Returns:
+            An empty AsyncBatch on this reference.
+        """
+        return AsyncBatch(self.armor, self.name)
+
+    async def _execute(self, words: Words, args: Sequence[Any], parse: Any) -> Any:
+        response = await self.armor.call(self.name, *words, args)
+        if not response.success:
+            raise error_for(response)
+        self.consistent = response.is_consistent
+        return parse(response)
+
+
+class AsyncBatch(BatchBase):
+    """The asyncio twin of Batch: methods queue at once, ``await send()`` sends the list.
+
+    Args:
+        armor: the session that sends the list.
+        reference: the reference the directives change.
+    """
+
+    def __init__(self, armor: AsyncArmor, reference: str):
+        super().__init__(armor.client_name, reference)
+        self._armor = armor
+
+    async def send(self) -> bool:
+        """Send the queued directives as one atomic list; see Batch.send.
+
+        Returns:
+            Whether the ontology is consistent after the list.
+
+        Raises:
+            ArmorServiceInternalError: a directive failed, so nothing changed (``index`` and
+                ``responses`` say which and how).
+        """
+        return self._finish(await self._armor.call_list(self.requests))
+
+    async def __aenter__(self) -> 'AsyncBatch':
+        return self
+
+    async def __aexit__(self, exc_type: Any, *exc: Any) -> None:
+        if exc_type is None and self.requests:
+            await self.send()

@@ -1,0 +1,70 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""Ask a question and print the answer as a table (short names; --iri for full IRIs).
+
+  armor query REF SPEC [SPEC] ARGS...        (QUERY is implied; "--" ends the specs early)
+
+The specs are those of QUERY in docs/commands.md; the longest known combination is taken, the
+rest are arguments. Examples:
+  armor query robotics IND CLASS OccupiedRoom
+  armor query robotics DATAPROP IND batteryLevel robot1
+  armor query robotics IND DL "Agent and isIn some Room"
+  armor query robotics CONSISTENCY
+SPARQL is answered as a table with a column per variable (see also armor sparql).
+Exit status: 0 answered, 1 the query failed, 2 no service.
+"""
+
+import argparse
+
+from armor_client import commands
+from armor_client.cli.call import print_response
+from armor_client.cli.common import (add_connection_arguments, connect, print_answer,
+                                     reporting_errors)
+from armor_client.errors import error_for
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """Declare the options of armor query.
+
+    Args:
+        parser: the verb's parser.
+    """
+    parser.add_argument('reference', metavar='REF', help='reference name')
+    parser.add_argument('words', nargs='+', metavar='SPEC/ARG',
+                        help='the QUERY specs, then the arguments')
+    parser.add_argument('--iri', action='store_true', help='show full IRIs, not short names')
+    parser.add_argument('--json', action='store_true', help='print the whole response as JSON')
+    add_connection_arguments(parser)
+
+
+@reporting_errors('query')
+def run(args: argparse.Namespace) -> int:
+    """Send the query and print its answer.
+
+    Args:
+        args: the parsed command line (words after a lone "--" in args.directive_args).
+
+    Returns:
+        The exit status.
+    """
+    words = list(args.words)
+    if words[0].upper() != 'QUERY':
+        words.insert(0, 'QUERY')
+    if args.directive_args:
+        words += ['--', *args.directive_args]
+    command, arguments = commands.split_directive(words)
+    if command is None or command.words[0] != 'QUERY':
+        raise RuntimeError(f'no QUERY command starts with "{" ".join(words)}"; '
+                           'see docs/commands.md#queries')
+    _, primary, secondary = command.words
+    if (primary, secondary) == ('SPARQL', ''):
+        # A table needs the variable names, which only the formatted answer carries.
+        secondary = 'FORMATTED'
+    with connect(args) as armor:
+        response = armor.call(args.reference, 'QUERY', primary, secondary, arguments)
+    if args.json:
+        print_response(response, as_json=True)
+        return 0 if response.success else 1
+    if not response.success:
+        raise error_for(response)
+    print_answer(response, primary, secondary, args.iri)
+    return 0

@@ -1,0 +1,955 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""The commands of the contract as methods, shared by the sync, asyncio and batch clients.
+
+``Manipulations`` and ``Queries`` only build directives and say how to read the answer; the
+class that mixes them in decides what "send" means through ``_execute``: Reference sends at
+once and returns the value, AsyncReference returns an awaitable of it, and Batch queues the
+directive for one atomic list. Every method therefore ends in ``return self._execute(...)``.
+"""
+
+import enum
+import re
+from dataclasses import dataclass, field
+from typing import Any, Callable, List, Optional, Sequence, Tuple, Union
+
+from armor_client.values import answer_value, entity_iri, short_name, typed_argument, Value
+
+Words = Tuple[str, str, str]
+Parser = Callable[[Any], Any]
+
+
+class Reasoner(str, enum.Enum):
+    """The reasoners every node has; any OWLReasonerFactory class name works too."""
+
+    HERMIT = 'HERMIT'
+    PELLET = 'PELLET'
+    JFACT = 'JFACT'
+    ELK = 'ELK'
+
+
+class Characteristic(str, enum.Enum):
+    """Characteristics of an object property (a data property can only be FUNCTIONAL)."""
+
+    FUNCTIONAL = 'FUNCTIONAL'
+    INVERSE_FUNCTIONAL = 'INVERSE_FUNCTIONAL'
+    TRANSITIVE = 'TRANSITIVE'
+    SYMMETRIC = 'SYMMETRIC'
+    ASYMMETRIC = 'ASYMMETRIC'
+    REFLEXIVE = 'REFLEXIVE'
+    IRREFLEXIVE = 'IRREFLEXIVE'
+
+
+@dataclass(frozen=True)
+class Consistency:
+    """The answer of QUERY CONSISTENCY.
+
+    Attributes:
+        consistent: whether the ontology is consistent.
+        explanation: when it is not, the axioms that cause it (Manchester syntax).
+    """
+
+    consistent: bool
+    explanation: List[str] = field(default_factory=list)
+
+    def __bool__(self) -> bool:
+        return self.consistent
+
+
+class SparqlRows(list):
+    """SPARQL answer rows (a list); ``timed_out`` says the time limit cut the answer short."""
+
+    def __init__(self, rows: Sequence[Any] = (), timed_out: bool = False):
+        super().__init__(rows)
+        self.timed_out = timed_out
+
+
+def word(value: Union[str, enum.Enum]) -> str:
+    """The string ARMOR expects for an enum member or a plain string."""
+    return value.value if isinstance(value, enum.Enum) else str(value)
+
+
+_BRACKETED_IRI = re.compile(r'<([^<>\s]+)>')
+
+
+class Answers:
+    """How to read answers: entities as short names, or as IRIs when ``iris`` is True."""
+
+    def __init__(self, iris: bool):
+        self.iris = iris
+
+    def entity(self, answer: str) -> str:
+        """One answered entity as a short name or an IRI."""
+        return entity_iri(answer) if self.iris else short_name(answer)
+
+    def entities(self, response: Any) -> List[str]:
+        """queried_objects as entity names."""
+        return [self.entity(answer) for answer in response.queried_objects]
+
+    def values(self, response: Any) -> List[Value]:
+        """queried_objects as Python values (literals converted, entities named)."""
+        return [answer_value(answer, self.iris) for answer in response.queried_objects]
+
+    def expressions(self, response: Any) -> List[str]:
+        """queried_objects as Manchester text, with short names unless iris is True."""
+        if self.iris:
+            return list(response.queried_objects)
+        return [_BRACKETED_IRI.sub(lambda m: short_name(m.group(1)), text)
+                for text in response.queried_objects]
+
+    def rows(self, response: Any) -> SparqlRows:
+        """sparql_queried_objects (FORMATTED) as one dict per row; unbound variables are None."""
+        rows: List[dict] = []
+        row: dict = {}
+        for item in response.sparql_queried_objects:
+            if not item.key:
+                rows.append(row)
+                row = {}
+            else:
+                row[item.key] = self.cell(item.value)
+        if row:
+            rows.append(row)
+        return SparqlRows(rows, response.timeout)
+
+    def cell(self, text: str) -> Optional[Value]:
+        """One SPARQL cell: None when unbound, a blank node as is, else a value or a name."""
+        if not text:
+            return None
+        if text in ('true', 'false'):
+            return text == 'true'
+        if text.startswith('_:'):
+            return text
+        return answer_value(text, self.iris)
+
+    @staticmethod
+    def lines(response: Any) -> SparqlRows:
+        """queried_objects of unformatted SPARQL, one string per row, unchanged."""
+        return SparqlRows(response.queried_objects, response.timeout)
+
+    @staticmethod
+    def consistency(response: Any) -> Consistency:
+        """The answer of QUERY CONSISTENCY."""
+        return Consistency(response.is_consistent, list(response.queried_objects))
+
+    @staticmethod
+    def nothing(response: Any) -> None:
+        """For directives whose answer is only success and consistency."""
+        return None
+
+
+class Manipulations:
+    """Every change ARMOR can make to a reference (each refused with 102 under another's mount).
+
+    Arguments naming entities take a plain name (``Robot``), a full IRI
+    (``http://example.org/onto#Robot`` or ``<...>``) or a prefixed name (``dev:Charger``).
+    Naming an entity that does not exist creates it.
+
+    Every method raises ArmorServiceInternalError (a subclass by exit code) when ARMOR refuses
+    the directive, and ArmorServiceCallError when the service cannot be called.
+    """
+
+    def _execute(self, words: Words, args: Sequence[Any], parse: Parser) -> Any:
+        raise NotImplementedError
+
+    def _change(self, command: str, primary: str, secondary: str, *args: Any) -> Any:
+        return self._execute((command, primary, secondary), args, Answers.nothing)
+
+    # Individuals
+
+    def add_individual(self, individual: str) -> None:
+        """Declare an individual (ADD IND).
+
+        Args:
+            individual: its name.
+        """
+        return self._change('ADD', 'IND', '', individual)
+
+    def add_individual_to_class(self, individual: str, cls: str) -> None:
+        """Assert that an individual belongs to a class (ADD IND CLASS).
+
+        Args:
+            individual: the individual.
+            cls: the class.
+        """
+        return self._change('ADD', 'IND', 'CLASS', individual, cls)
+
+    def remove_individual(self, individual: str) -> None:
+        """Remove every axiom that mentions the individual (REMOVE IND).
+
+        Args:
+            individual: the individual.
+        """
+        return self._change('REMOVE', 'IND', '', individual)
+
+    def remove_individual_from_class(self, individual: str, cls: str) -> None:
+        """Remove the assertion that an individual belongs to a class (REMOVE IND CLASS).
+
+        Args:
+            individual: the individual.
+            cls: the class.
+        """
+        return self._change('REMOVE', 'IND', 'CLASS', individual, cls)
+
+    def add_same_individuals(self, *individuals: str) -> None:
+        """Assert that two or more names denote the same individual (ADD IND SAME).
+
+        Args:
+            individuals: the names, at least two.
+        """
+        return self._change('ADD', 'IND', 'SAME', *individuals)
+
+    def remove_same_individuals(self, *individuals: str) -> None:
+        """Remove a SameIndividual assertion (REMOVE IND SAME).
+
+        Args:
+            individuals: the names as they were asserted the same.
+        """
+        return self._change('REMOVE', 'IND', 'SAME', *individuals)
+
+    def make_individuals_different(self, *individuals: str) -> None:
+        """Assert that the individuals are pairwise different (DISJOINT IND).
+
+        Args:
+            individuals: two or more individuals.
+        """
+        return self._change('DISJOINT', 'IND', '', *individuals)
+
+    def make_instances_different(self, cls: str) -> None:
+        """Make all instances of a class, inferred ones too, pairwise different.
+
+        DISJOINT IND CLASS: the usual way to give the reasoner the unique name assumption.
+
+        Args:
+            cls: the class.
+        """
+        return self._change('DISJOINT', 'IND', 'CLASS', cls)
+
+    def rename_individual(self, old: str, new: str) -> None:
+        """Rename an individual everywhere (RENAME IND).
+
+        Args:
+            old: its name now.
+            new: its new name.
+        """
+        return self._change('RENAME', 'IND', '', old, new)
+
+    # Classes
+
+    def add_class(self, cls: str) -> None:
+        """Declare a class (ADD CLASS).
+
+        Args:
+            cls: its name.
+        """
+        return self._change('ADD', 'CLASS', '', cls)
+
+    def add_subclass(self, subclass: str, superclass: str) -> None:
+        """Assert SubClassOf(subclass, superclass) (ADD CLASS CLASS).
+
+        Args:
+            subclass: the more specific class.
+            superclass: the more general class.
+        """
+        return self._change('ADD', 'CLASS', 'CLASS', subclass, superclass)
+
+    def remove_class(self, cls: str) -> None:
+        """Remove every axiom that mentions the class (REMOVE CLASS).
+
+        Args:
+            cls: the class.
+        """
+        return self._change('REMOVE', 'CLASS', '', cls)
+
+    def remove_subclass(self, subclass: str, superclass: str) -> None:
+        """Remove SubClassOf(subclass, superclass) (REMOVE CLASS CLASS).
+
+        Args:
+            subclass: the more specific class.
+            superclass: the more general class.
+        """
+        return self._change('REMOVE', 'CLASS', 'CLASS', subclass, superclass)
+
+    def make_classes_disjoint(self, *classes: str) -> None:
+        """Assert that the classes are pairwise disjoint (DISJOINT CLASS).
+
+        Args:
+            classes: two or more classes.
+        """
+        return self._change('DISJOINT', 'CLASS', '', *classes)
+
+    def make_subclasses_disjoint(self, cls: str) -> None:
+        """Make the direct subclasses of a class, inferred ones too, disjoint.
+
+        DISJOINT CLASS CLASS.
+
+        Args:
+            cls: the parent class.
+        """
+        return self._change('DISJOINT', 'CLASS', 'CLASS', cls)
+
+    def make_equivalent_to_superclasses(self, cls: str) -> None:
+        """Turn a class's SubClassOf axioms into one EquivalentClasses axiom.
+
+        MAKE EQUIVALENT CLASS: the class becomes defined by what it was said to be.
+
+        Args:
+            cls: the class (it must have superclasses).
+        """
+        return self._change('MAKE', 'EQUIVALENT', 'CLASS', cls)
+
+    def add_equivalent_class(self, cls: str, expression: str) -> None:
+        """Define a class by a class expression (ADD CLASS EQUIVALENT).
+
+        Args:
+            cls: the class.
+            expression: Manchester syntax, e.g. ``Room and (contains some Agent)``.
+        """
+        return self._change('ADD', 'CLASS', 'EQUIVALENT', cls, expression)
+
+    def remove_equivalent_class(self, cls: str, expression: str) -> None:
+        """Remove a definition added by add_equivalent_class (REMOVE CLASS EQUIVALENT).
+
+        Args:
+            cls: the class.
+            expression: the same class expression.
+        """
+        return self._change('REMOVE', 'CLASS', 'EQUIVALENT', cls, expression)
+
+    def add_min_cardinality(self, cls: str, prop: str, count: int, value_class: str) -> None:
+        """Assert ``cls SubClassOf prop min count value_class`` (ADD CARDINALITY MIN).
+
+        Args:
+            cls: the class restricted.
+            prop: an object property.
+            count: the least number of values.
+            value_class: the class of the values.
+        """
+        return self._change('ADD', 'CARDINALITY', 'MIN', cls, prop, int(count), value_class)
+
+    def rename_class(self, old: str, new: str) -> None:
+        """Rename a class everywhere (RENAME CLASS).
+
+        Args:
+            old: its name now.
+            new: its new name.
+        """
+        return self._change('RENAME', 'CLASS', '', old, new)
+
+    # Property values
+
+    def add_data_value(self, prop: str, individual: str, value: Value,
+                       datatype: str = '') -> None:
+        """Give an individual a data property value (ADD DATAPROP IND).
+
+        Args:
+            prop: the data property.
+            individual: the individual.
+            value: bool, int, float or str; the type follows the value (BOOLEAN, INTEGER,
+                DOUBLE, STRING) unless datatype says otherwise.
+            datatype: ARMOR's type name (LONG, FLOAT, ...) or an ``xsd:`` datatype.
+        """
+        return self._change('ADD', 'DATAPROP', 'IND', prop, individual,
+                            *typed_argument(value, datatype))
+
+    def remove_data_value(self, prop: str, individual: str, value: Value,
+                          datatype: str = '') -> None:
+        """Remove a data property value (REMOVE DATAPROP IND).
+
+        Args:
+            prop: the data property.
+            individual: the individual.
+            value: the value to remove, typed as when it was added.
+            datatype: as for add_data_value.
+        """
+        return self._change('REMOVE', 'DATAPROP', 'IND', prop, individual,
+                            *typed_argument(value, datatype))
+
+    def replace_data_value(self, prop: str, individual: str, new: Value, old: Value,
+                           datatype: str = '') -> None:
+        """Replace one data property value by another in one step (REPLACE DATAPROP IND).
+
+        Args:
+            prop: the data property.
+            individual: the individual.
+            new: the value it gets.
+            old: the value it loses (of the same type).
+            datatype: as for add_data_value, for both values.
+        """
+        value_type, new_text = typed_argument(new, datatype)
+        return self._change('REPLACE', 'DATAPROP', 'IND', prop, individual, value_type, new_text,
+                            typed_argument(old, value_type)[1])
+
+    def add_object_value(self, prop: str, individual: str, value: str) -> None:
+        """Relate an individual to another (ADD OBJECTPROP IND).
+
+        Args:
+            prop: the object property.
+            individual: the subject.
+            value: the individual it is related to.
+        """
+        return self._change('ADD', 'OBJECTPROP', 'IND', prop, individual, value)
+
+    def remove_object_value(self, prop: str, individual: str, value: str) -> None:
+        """Remove a relation between two individuals (REMOVE OBJECTPROP IND).
+
+        Args:
+            prop: the object property.
+            individual: the subject.
+            value: the related individual.
+        """
+        return self._change('REMOVE', 'OBJECTPROP', 'IND', prop, individual, value)
+
+    def replace_object_value(self, prop: str, individual: str, new: str, old: str) -> None:
+        """Replace the related individual in one step (REPLACE OBJECTPROP IND).
+
+        Args:
+            prop: the object property.
+            individual: the subject.
+            new: the individual it becomes related to.
+            old: the individual it stops being related to.
+        """
+        return self._change('REPLACE', 'OBJECTPROP', 'IND', prop, individual, new, old)
+
+    # Properties
+
+    def add_object_subproperty(self, subproperty: str, superproperty: str) -> None:
+        """Assert SubObjectPropertyOf (ADD OBJECTPROP OBJECTPROP).
+
+        Args:
+            subproperty: the more specific object property.
+            superproperty: the more general one.
+        """
+        return self._change('ADD', 'OBJECTPROP', 'OBJECTPROP', subproperty, superproperty)
+
+    def remove_object_subproperty(self, subproperty: str, superproperty: str) -> None:
+        """Remove SubObjectPropertyOf (REMOVE OBJECTPROP OBJECTPROP).
+
+        Args:
+            subproperty: the more specific object property.
+            superproperty: the more general one.
+        """
+        return self._change('REMOVE', 'OBJECTPROP', 'OBJECTPROP', subproperty, superproperty)
+
+    def add_data_subproperty(self, subproperty: str, superproperty: str) -> None:
+        """Assert SubDataPropertyOf (ADD DATAPROP DATAPROP).
+
+        Args:
+            subproperty: the more specific data property.
+            superproperty: the more general one.
+        """
+        return self._change('ADD', 'DATAPROP', 'DATAPROP', subproperty, superproperty)
+
+    def remove_data_subproperty(self, subproperty: str, superproperty: str) -> None:
+        """Remove SubDataPropertyOf (REMOVE DATAPROP DATAPROP).
+
+        Args:
+            subproperty: the more specific data property.
+            superproperty: the more general one.
+        """
+        return self._change('REMOVE', 'DATAPROP', 'DATAPROP', subproperty, superproperty)
+
+    def add_inverse_property(self, prop: str, inverse: str) -> None:
+        """Assert that two object properties are inverses (ADD OBJECTPROP INVERSE).
+
+        Args:
+            prop: one object property.
+            inverse: the other.
+        """
+        return self._change('ADD', 'OBJECTPROP', 'INVERSE', prop, inverse)
+
+    def remove_inverse_property(self, prop: str, inverse: str) -> None:
+        """Remove an InverseObjectProperties axiom (REMOVE OBJECTPROP INVERSE).
+
+        Args:
+            prop: one object property.
+            inverse: the other.
+        """
+        return self._change('REMOVE', 'OBJECTPROP', 'INVERSE', prop, inverse)
+
+    def add_object_characteristic(self, prop: str,
+                                  characteristic: Union[Characteristic, str]) -> None:
+        """Give an object property a characteristic (ADD OBJECTPROP CHARACTERISTIC).
+
+        Args:
+            prop: the object property.
+            characteristic: FUNCTIONAL, TRANSITIVE, SYMMETRIC, ... (see Characteristic).
+        """
+        return self._change('ADD', 'OBJECTPROP', 'CHARACTERISTIC', prop, word(characteristic))
+
+    def remove_object_characteristic(self, prop: str,
+                                     characteristic: Union[Characteristic, str]) -> None:
+        """Take a characteristic from an object property (REMOVE OBJECTPROP CHARACTERISTIC).
+
+        Args:
+            prop: the object property.
+            characteristic: as for add_object_characteristic.
+        """
+        return self._change('REMOVE', 'OBJECTPROP', 'CHARACTERISTIC', prop, word(characteristic))
+
+    def add_data_characteristic(self, prop: str,
+                                characteristic: Union[Characteristic, str] = 'FUNCTIONAL'
+                                ) -> None:
+        """Make a data property functional (ADD DATAPROP CHARACTERISTIC).
+
+        Args:
+            prop: the data property.
+            characteristic: FUNCTIONAL, the only one OWL 2 has for data properties.
+        """
+        return self._change('ADD', 'DATAPROP', 'CHARACTERISTIC', prop, word(characteristic))
+
+    def remove_data_characteristic(self, prop: str,
+                                   characteristic: Union[Characteristic, str] = 'FUNCTIONAL'
+                                   ) -> None:
+        """Make a data property no longer functional (REMOVE DATAPROP CHARACTERISTIC).
+
+        Args:
+            prop: the data property.
+            characteristic: FUNCTIONAL.
+        """
+        return self._change('REMOVE', 'DATAPROP', 'CHARACTERISTIC', prop, word(characteristic))
+
+    def add_object_domain(self, prop: str, cls: str) -> None:
+        """Assert an object property's domain (ADD OBJECTPROP DOMAIN).
+
+        Args:
+            prop: the object property.
+            cls: the class of its subjects.
+        """
+        return self._change('ADD', 'OBJECTPROP', 'DOMAIN', prop, cls)
+
+    def remove_object_domain(self, prop: str, cls: str) -> None:
+        """Remove an object property's domain (REMOVE OBJECTPROP DOMAIN).
+
+        Args:
+            prop: the object property.
+            cls: the domain class.
+        """
+        return self._change('REMOVE', 'OBJECTPROP', 'DOMAIN', prop, cls)
+
+    def add_object_range(self, prop: str, cls: str) -> None:
+        """Assert an object property's range (ADD OBJECTPROP RANGE).
+
+        Args:
+            prop: the object property.
+            cls: the class of its values.
+        """
+        return self._change('ADD', 'OBJECTPROP', 'RANGE', prop, cls)
+
+    def remove_object_range(self, prop: str, cls: str) -> None:
+        """Remove an object property's range (REMOVE OBJECTPROP RANGE).
+
+        Args:
+            prop: the object property.
+            cls: the range class.
+        """
+        return self._change('REMOVE', 'OBJECTPROP', 'RANGE', prop, cls)
+
+    def add_data_domain(self, prop: str, cls: str) -> None:
+        """Assert a data property's domain (ADD DATAPROP DOMAIN).
+
+        Args:
+            prop: the data property.
+            cls: the class of its subjects.
+        """
+        return self._change('ADD', 'DATAPROP', 'DOMAIN', prop, cls)
+
+    def remove_data_domain(self, prop: str, cls: str) -> None:
+        """Remove a data property's domain (REMOVE DATAPROP DOMAIN).
+
+        Args:
+            prop: the data property.
+            cls: the domain class.
+        """
+        return self._change('REMOVE', 'DATAPROP', 'DOMAIN', prop, cls)
+
+    def add_data_range(self, prop: str, datatype: str) -> None:
+        """Assert a data property's range (ADD DATAPROP RANGE).
+
+        Args:
+            prop: the data property.
+            datatype: ARMOR's type name (INTEGER, LONG, ...) or an ``xsd:`` datatype.
+        """
+        return self._change('ADD', 'DATAPROP', 'RANGE', prop, datatype)
+
+    def remove_data_range(self, prop: str, datatype: str) -> None:
+        """Remove a data property's range (REMOVE DATAPROP RANGE).
+
+        Args:
+            prop: the data property.
+            datatype: the range datatype.
+        """
+        return self._change('REMOVE', 'DATAPROP', 'RANGE', prop, datatype)
+
+    def rename_object_property(self, old: str, new: str) -> None:
+        """Rename an object property everywhere (RENAME OBJECTPROP).
+
+        Args:
+            old: its name now.
+            new: its new name.
+        """
+        return self._change('RENAME', 'OBJECTPROP', '', old, new)
+
+    def rename_data_property(self, old: str, new: str) -> None:
+        """Rename a data property everywhere (RENAME DATAPROP).
+
+        Args:
+            old: its name now.
+            new: its new name.
+        """
+        return self._change('RENAME', 'DATAPROP', '', old, new)
+
+    # Axioms and rules
+
+    def add_axiom(self, axiom: str) -> None:
+        """Add one axiom (ADD AXIOM).
+
+        Args:
+            axiom: Manchester syntax (``Robot SubClassOf isIn max 1 Location``) or OWL
+                functional syntax.
+        """
+        return self._change('ADD', 'AXIOM', '', axiom)
+
+    def remove_axiom(self, axiom: str) -> None:
+        """Remove one axiom (REMOVE AXIOM).
+
+        Args:
+            axiom: as for add_axiom.
+        """
+        return self._change('REMOVE', 'AXIOM', '', axiom)
+
+    def add_rule(self, name: str, rule: str) -> None:
+        """Add a SWRL rule (ADD SWRL).
+
+        Properties the rule uses must exist already (the parser needs to know their kind).
+
+        Args:
+            name: a label for the rule.
+            rule: ``Robot(?r), isIn(?r, ?l) -> Visited(?l)``; built-ins as ``swrlb:lessThan``.
+        """
+        return self._change('ADD', 'SWRL', '', name, rule)
+
+    def remove_rule(self, name: str, rule: str) -> None:
+        """Remove a SWRL rule (REMOVE SWRL).
+
+        Args:
+            name: its label.
+            rule: the rule, as added.
+        """
+        return self._change('REMOVE', 'SWRL', '', name, rule)
+
+    # Buffers
+
+    def apply(self) -> None:
+        """Apply the buffered manipulations of a buffered reference (APPLY)."""
+        return self._change('APPLY', '', '')
+
+    def reason(self) -> None:
+        """Apply the buffer and bring the reasoner up to date (REASON)."""
+        return self._change('REASON', '', '')
+
+
+class Queries:
+    """Every question ARMOR answers about a reference, from asserted and inferred knowledge.
+
+    Entities come back as short names (``kitchen``) or, with ``iris=True``, as IRIs
+    (``http://www.example.org/robotics#kitchen``); literals as int, float, bool or str.
+    Answers are sorted by the service. Queries are never refused because of a mount.
+
+    Every method raises ArmorServiceInternalError (a subclass by exit code) when ARMOR refuses
+    the directive, and ArmorServiceCallError when the service cannot be called.
+    """
+
+    answers: Answers
+
+    def _execute(self, words: Words, args: Sequence[Any], parse: Parser) -> Any:
+        raise NotImplementedError
+
+    def types_of(self, individual: str) -> List[str]:
+        """The classes of an individual (QUERY IND).
+
+        Args:
+            individual: the individual.
+
+        Returns:
+            Its classes, asserted and inferred; empty when it has none (or does not exist).
+        """
+        return self._execute(('QUERY', 'IND', ''), [individual], self.answers.entities)
+
+    def classes_of(self, individual: str, most_specific: bool = False) -> List[str]:
+        """The classes of an individual (QUERY CLASS IND).
+
+        Args:
+            individual: the individual.
+            most_specific: only the most specific classes.
+
+        Returns:
+            The classes.
+        """
+        args = [individual, 'true'] if most_specific else [individual]
+        return self._execute(('QUERY', 'CLASS', 'IND'), args, self.answers.entities)
+
+    def instances(self, cls: str) -> List[str]:
+        """The instances of a class, asserted and inferred (QUERY IND CLASS).
+
+        Args:
+            cls: the class.
+
+        Returns:
+            Its instances.
+        """
+        return self._execute(('QUERY', 'IND', 'CLASS'), [cls], self.answers.entities)
+
+    def dl_instances(self, expression: str) -> List[str]:
+        """The instances of a class expression, a "DL query" (QUERY IND DL).
+
+        Args:
+            expression: Manchester syntax, e.g. ``Agent and isIn some Room``.
+
+        Returns:
+            Its instances.
+        """
+        return self._execute(('QUERY', 'IND', 'DL'), [expression], self.answers.entities)
+
+    def same_individuals(self, individual: str) -> List[str]:
+        """The individuals inferred equal to one (QUERY IND SAME).
+
+        Args:
+            individual: the individual.
+
+        Returns:
+            The others (it is not in the list).
+        """
+        return self._execute(('QUERY', 'IND', 'SAME'), [individual], self.answers.entities)
+
+    def data_properties_of(self, individual: str) -> List[str]:
+        """The data properties that have values for an individual (QUERY IND DATAPROP).
+
+        Args:
+            individual: the individual.
+
+        Returns:
+            The data properties.
+        """
+        return self._execute(('QUERY', 'IND', 'DATAPROP'), [individual], self.answers.entities)
+
+    def object_properties_of(self, individual: str) -> List[str]:
+        """The object properties that have values for an individual (QUERY IND OBJECTPROP).
+
+        Args:
+            individual: the individual.
+
+        Returns:
+            The object properties.
+        """
+        return self._execute(('QUERY', 'IND', 'OBJECTPROP'), [individual],
+                             self.answers.entities)
+
+    def data_values(self, prop: str, individual: str) -> List[Value]:
+        """An individual's values of a data property (QUERY DATAPROP IND).
+
+        Args:
+            prop: the data property.
+            individual: the individual.
+
+        Returns:
+            The values as int, float, bool or str.
+        """
+        return self._execute(('QUERY', 'DATAPROP', 'IND'), [prop, individual],
+                             self.answers.values)
+
+    def object_values(self, prop: str, individual: str) -> List[str]:
+        """The individuals an individual is related to by an object property.
+
+        QUERY OBJECTPROP IND.
+
+        Args:
+            prop: the object property.
+            individual: the subject.
+
+        Returns:
+            The related individuals.
+        """
+        return self._execute(('QUERY', 'OBJECTPROP', 'IND'), [prop, individual],
+                             self.answers.entities)
+
+    def subclasses(self, cls: str) -> List[str]:
+        """The subclasses of a class, all levels (QUERY CLASS CLASS).
+
+        Args:
+            cls: the class.
+
+        Returns:
+            Its subclasses.
+        """
+        return self._execute(('QUERY', 'CLASS', 'CLASS'), [cls], self.answers.entities)
+
+    def dl_subclasses(self, expression: str) -> List[str]:
+        """The named subclasses of a class expression (QUERY CLASS DL).
+
+        Args:
+            expression: Manchester syntax.
+
+        Returns:
+            The subclasses.
+        """
+        return self._execute(('QUERY', 'CLASS', 'DL'), [expression], self.answers.entities)
+
+    def superclasses(self, cls: str) -> List[str]:
+        """The superclasses of a class (QUERY CLASS SUPER).
+
+        Args:
+            cls: the class.
+
+        Returns:
+            Its superclasses.
+        """
+        return self._execute(('QUERY', 'CLASS', 'SUPER'), [cls], self.answers.entities)
+
+    def equivalent_classes(self, cls: str) -> List[str]:
+        """The named classes equivalent to a class (QUERY CLASS EQUIVALENT).
+
+        Args:
+            cls: the class.
+
+        Returns:
+            The equivalent classes (not the class itself).
+        """
+        return self._execute(('QUERY', 'CLASS', 'EQUIVALENT'), [cls], self.answers.entities)
+
+    def disjoint_classes(self, cls: str) -> List[str]:
+        """The classes disjoint with a class (QUERY CLASS DISJOINT).
+
+        Args:
+            cls: the class.
+
+        Returns:
+            The disjoint classes.
+        """
+        return self._execute(('QUERY', 'CLASS', 'DISJOINT'), [cls], self.answers.entities)
+
+    def restrictions(self, cls: str) -> List[str]:
+        """The restrictions in a class's superclasses and definitions (QUERY CLASS RESTRICTIONS).
+
+        Args:
+            cls: the class.
+
+        Returns:
+            One restriction per string, Manchester syntax (``contains some Agent``).
+        """
+        return self._execute(('QUERY', 'CLASS', 'RESTRICTIONS'), [cls],
+                             self.answers.expressions)
+
+    def object_subproperties(self, prop: str) -> List[str]:
+        """The sub-properties of an object property (QUERY OBJECTPROP OBJECTPROP).
+
+        Args:
+            prop: the object property.
+
+        Returns:
+            Its sub-properties.
+        """
+        return self._execute(('QUERY', 'OBJECTPROP', 'OBJECTPROP'), [prop],
+                             self.answers.entities)
+
+    def data_subproperties(self, prop: str) -> List[str]:
+        """The sub-properties of a data property (QUERY DATAPROP DATAPROP).
+
+        Args:
+            prop: the data property.
+
+        Returns:
+            Its sub-properties.
+        """
+        return self._execute(('QUERY', 'DATAPROP', 'DATAPROP'), [prop], self.answers.entities)
+
+    def sparql(self, query: str, timeout_ms: Optional[int] = None) -> SparqlRows:
+        """A SPARQL SELECT or ASK over asserted and inferred knowledge (QUERY SPARQL FORMATTED).
+
+        The ontology's prefixes are predefined and ``:`` is the reference's namespace.
+
+        Args:
+            query: the query, e.g. ``SELECT ?room WHERE { ?room a :Room }``.
+            timeout_ms: a time limit for the service; the rows found by then come back with
+                ``timed_out`` set.
+
+        Returns:
+            One dict per row, variable -> value (None when unbound); an ASK answers
+            ``[{'ASK': True}]`` or ``[{'ASK': False}]``.
+        """
+        args = [query] if timeout_ms is None else [query, int(timeout_ms)]
+        return self._execute(('QUERY', 'SPARQL', 'FORMATTED'), args, self.answers.rows)
+
+    def sparql_lines(self, query: str, timeout_ms: Optional[int] = None) -> SparqlRows:
+        """A SPARQL query answered as ARMOR's text rows (QUERY SPARQL).
+
+        Args:
+            query: the query.
+            timeout_ms: as for sparql().
+
+        Returns:
+            One string per row: the value alone for one variable, ``a=...; b=...`` for
+            several, ``true``/``false`` for ASK.
+        """
+        args = [query] if timeout_ms is None else [query, int(timeout_ms)]
+        return self._execute(('QUERY', 'SPARQL', ''), args, Answers.lines)
+
+    def ask(self, query: str) -> bool:
+        """A SPARQL ASK query as a bool.
+
+        Args:
+            query: ``ASK { :robot1 :isIn :kitchen }``.
+
+        Returns:
+            The answer.
+        """
+        return self._execute(('QUERY', 'SPARQL', 'FORMATTED'), [query],
+                             lambda response: self.answers.rows(response)[0]['ASK'])
+
+    def check_consistency(self) -> Consistency:
+        """Whether the ontology is consistent, and why not (QUERY CONSISTENCY).
+
+        Returns:
+            A Consistency (true in a boolean context when consistent).
+        """
+        return self._execute(('QUERY', 'CONSISTENCY', ''), [], Answers.consistency)
+
+
+class ReferenceCommands:
+    """Saving, dropping and mounting a reference (never refused because of a mount).
+
+    Every method raises ArmorServiceInternalError (a subclass by exit code) when ARMOR refuses
+    the directive, and ArmorServiceCallError when the service cannot be called.
+    """
+
+    def _execute(self, words: Words, args: Sequence[Any], parse: Parser) -> Any:
+        raise NotImplementedError
+
+    def save(self, path: str = '', format: str = '', *, inferences: bool = False) -> None:
+        """Write the ontology to a file on the node's machine (SAVE / SAVE INFERENCE).
+
+        Args:
+            path: where ('' = the file it was loaded from); inside the node's allowed_dirs.
+            format: rdfxml, owlxml, turtle, functional or manchester ('' = as loaded).
+            inferences: also write the inferred types, property values and hierarchy (the
+                live ontology does not change).
+        """
+        args = [path, format] if format else ([path] if path else [])
+        return self._execute(('SAVE', 'INFERENCE' if inferences else '', ''), args,
+                             Answers.nothing)
+
+    def drop(self) -> None:
+        """Unload the reference (DROP)."""
+        return self._execute(('DROP', '', ''), [], Answers.nothing)
+
+    def mount(self) -> None:
+        """Become the only client allowed to change this reference (MOUNT).
+
+        Raises ArmorMountError (203) when another client holds the mount.
+        """
+        return self._execute(('MOUNT', '', ''), [], Answers.nothing)
+
+    def unmount(self) -> None:
+        """Release the mount (UNMOUNT).
+
+        Raises ArmorMountError (203) when this client does not hold the mount.
+        """
+        return self._execute(('UNMOUNT', '', ''), [], Answers.nothing)
