@@ -145,15 +145,20 @@ fi
 # ---------------------------------------------------------------- 3. core (Java)
 if [ -f core/pom.xml ]; then
   core_hash="$(hash_str "$(hash_of core/pom.xml)" "$(hash_tree core/src)")"
-  if up_to_date core "$core_hash" && compgen -G "core/target/*.jar" >/dev/null; then
+  if up_to_date core "$core_hash" && [ -f install/armor_core/armor-core.jar ]; then
     echo "core: up to date"
   else
     t0=$(now); unstamp core; : > "$LOGS/core.log"
     run_logged core mvn -B -q -f core/pom.xml package -DskipTests
+    # Running cores keep reading the jars they started with: install a fresh copy beside the
+    # old one and swap the directories by rename, never overwriting a jar in place.
+    rm -rf install/armor_core.new install/armor_core.old
+    mkdir -p install/armor_core.new
+    cp -r core/target/armor-core.jar core/target/lib install/armor_core.new/
+    if [ -d install/armor_core ]; then mv install/armor_core install/armor_core.old; fi
+    mv install/armor_core.new install/armor_core
     stamp core "$core_hash"
     echo "core: built in $(( $(now) - t0 )) s"
-    [ -f core/target/armor-core.jar ] \
-      || echo "core: WARNING: core/target/armor-core.jar was not produced (ARMOR_CORE_JAR points there)" >&2
   fi
 else
   echo "core: skipped (no core/pom.xml yet)"
@@ -249,7 +254,7 @@ _armor_prepend LD_LIBRARY_PATH "$_armor_prefix/lib"
 _ROS_WHEELS_BOOTSTRAP_COMPLETE=1
 _armor_prepend AMENT_PREFIX_PATH "$_armor_venv"
 _armor_prepend AMENT_PREFIX_PATH "$_armor_prefix"
-ARMOR_CORE_JAR="$_armor_root/core/target/armor-core.jar"
+ARMOR_CORE_JAR="$_armor_root/install/armor_core/armor-core.jar"
 RMW_IMPLEMENTATION=rmw_fastrtps_cpp
 # DDS discovery stays on this host unless the caller chose otherwise.
 : "${ROS_AUTOMATIC_DISCOVERY_RANGE:=LOCALHOST}"

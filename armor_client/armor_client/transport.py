@@ -17,9 +17,15 @@ from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 import rclpy
 from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
+from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy
 
 DIRECTIVE_SERVICE = 'armor_interface_srv'
 LIST_SERVICE = 'armor_interface_serialized_srv'
+
+# As deep as the node's (armor_service.node.SERVICE_QOS): the default depth of 10 loses answers
+# under load. Kept here too so the client needs nothing from the service package.
+SERVICE_QOS = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=1000,
+                         reliability=ReliabilityPolicy.RELIABLE)
 
 _node_numbers = itertools.count()
 
@@ -57,8 +63,10 @@ class ArmorTransport:
             self._spinner.start()
         self.node = node
         prefix = namespace.rstrip('/') + '/' if namespace else ''
-        self._directive = node.create_client(ArmorDirective, prefix + DIRECTIVE_SERVICE)
-        self._list = node.create_client(ArmorDirectiveList, prefix + LIST_SERVICE)
+        self._directive = node.create_client(ArmorDirective, prefix + DIRECTIVE_SERVICE,
+                                             qos_profile=SERVICE_QOS)
+        self._list = node.create_client(ArmorDirectiveList, prefix + LIST_SERVICE,
+                                        qos_profile=SERVICE_QOS)
         self._service_wait_s = service_wait_s
         self._ready = set()
 

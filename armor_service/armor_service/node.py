@@ -18,7 +18,14 @@ import rclpy
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.node import Node
+from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy
 from rcl_interfaces.msg import ParameterDescriptor
+
+# The default service QoS keeps 10 samples: with more answers than that in flight to slow
+# clients, a reliable writer overwrites ones not yet acknowledged and those clients wait forever
+# (seen with 8 client processes on 2 cores). Requests and answers are small; keep many.
+SERVICE_QOS = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=1000,
+                         reliability=ReliabilityPolicy.RELIABLE)
 
 # Exit code the core reserves for "time limit reached" (ExitCode.java).
 TIMEOUT = 211
@@ -48,9 +55,10 @@ class ArmorService(Node):
         # the same one, which the core serialises per reference) are answered meanwhile.
         group = ReentrantCallbackGroup()
         self.create_service(ArmorDirective, 'armor_interface_srv', self.directive_callback,
-                            callback_group=group)
+                            qos_profile=SERVICE_QOS, callback_group=group)
         self.create_service(ArmorDirectiveList, 'armor_interface_serialized_srv',
-                            self.directive_list_callback, callback_group=group)
+                            self.directive_list_callback, qos_profile=SERVICE_QOS,
+                            callback_group=group)
         self.get_logger().info(
             f'ARMOR ready: services {self.resolve_service_name("armor_interface_srv")} and '
             f'{self.resolve_service_name("armor_interface_serialized_srv")}; core pid '
@@ -124,10 +132,11 @@ class ArmorService(Node):
                                f'"{self._value("preload_reference")}"')
 
     def _default_state_dir(self) -> str:
-        """One directory per node name, so that two nodes never replay each other's journals."""
+        """One directory per ROS domain and node name: two nodes never share journals."""
         data_home = os.environ.get('XDG_DATA_HOME') or os.path.expanduser('~/.local/share')
         node = self.get_fully_qualified_name().strip('/').replace('/', '__')
-        return os.path.join(data_home, 'armor_ros2', node)
+        domain = 'domain' + (os.environ.get('ROS_DOMAIN_ID') or '0')
+        return os.path.join(data_home, 'armor_ros2', domain, node)
 
     def _core_jar(self) -> str:
         jar = self._value('core_jar') or os.environ.get('ARMOR_CORE_JAR', '')
@@ -152,7 +161,7 @@ class ArmorService(Node):
             'reasoner_timeout_ms': (0, 'time limit handed to the reasoners (0 = none)'),
             'mount_lease_s': (0, 'release a mount whose holder sent nothing for this long'),
             'state_dir': ('', 'journals and checkpoints of every reference (default: '
-                          '$XDG_DATA_HOME/armor_ros2/<node name>)'),
+                          '$XDG_DATA_HOME/armor_ros2/domain<ROS_DOMAIN_ID>/<node name>)'),
             'restore_state': (True, 'restore the references found in state_dir at start; '
                               'false deletes them for a clean start'),
             'journal_fsync': (True, 'force every journal record to disk before acknowledging '

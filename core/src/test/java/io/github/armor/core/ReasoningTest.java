@@ -73,6 +73,19 @@ class ReasoningTest {
         assertEquals(List.of(), fixture.ok("map", "QUERY IND CLASS", "Visited").queriedObjects());
     }
 
+    @ParameterizedTest
+    @ValueSource(strings = {"HERMIT", "PELLET"})
+    void rulesMayCreatePropertiesAndCompareIndividuals(String reasoner) {
+        fixture.loadRobotics("map", reasoner, true);
+        fixture.ok("map", "ADD SWRL", "reach", "connectedTo(?a, ?b) -> reaches(?a, ?b)");
+        fixture.ok("map", "ADD SWRL", "apart", "isIn(?x, ?a), isIn(?y, ?b), DifferentFrom(?a, ?b) -> apartFrom(?x, ?y)");
+        // No unique-name assumption in OWL: the rule fires for individuals known to differ.
+        fixture.ok("map", "DISJOINT IND", "kitchen", "corridor1");
+        fixture.ok("map", "REASON");
+        assertEquals(iris("corridor1"), fixture.ok("map", "QUERY OBJECTPROP IND", "reaches", "kitchen").queriedObjects());
+        assertEquals(iris("alice"), fixture.ok("map", "QUERY OBJECTPROP IND", "apartFrom", "robot1").queriedObjects());
+    }
+
     @org.junit.jupiter.api.Test
     void openlletAppliesRulesWithBuiltIns() {
         fixture.loadRobotics("map", "PELLET", true);

@@ -47,6 +47,9 @@ final class Syntax {
     // Protégé writes built-ins as swrlb:lessThan; the OWL API parser knows them by bare name or full IRI.
     private static final Pattern SWRLB_PREFIXED = Pattern.compile("\\bswrlb:([A-Za-z]+)\\s*\\(");
     private static final int EXPECTED_TOKENS_SHOWN = 12;
+    private static final Pattern BINARY_ATOM = Pattern.compile("([\\p{L}_][\\p{L}\\p{N}_.\\-]*)\\s*\\(\\s*\\?[^,()]+,");
+    // SWRL's own atoms, never entity names.
+    private static final Set<String> SWRL_KEYWORDS = Set.of("DifferentFrom", "SameAs", "differentFrom", "sameAs");
     private static final String SWRL_BUILT_INS = "http://www.w3.org/2003/11/swrlb#";
     // The OWL API parser reads a missing operand ("isIn some", "not") as owl:Thing instead of
     // failing; an operator with nothing after it is refused here, before parsing.
@@ -71,10 +74,26 @@ final class Syntax {
         return parse(text, parser::parseAxiom);
     }
 
-    /** A SWRL rule ({@code Robot(?r), isIn(?r, ?l) -> Occupied(?l)}), labelled with its name. */
+    /**
+     * A SWRL rule ({@code Robot(?r), isIn(?r, ?l) -> Occupied(?l)}), labelled with its name. A
+     * predicate the ontology lacks is created: a class when it takes one argument, an object
+     * property when it takes two.
+     */
     static SWRLRule rule(Reference reference, String name, String text) {
-        ManchesterOWLSyntaxParser parser = parser(reference,
-                "Rule: " + SWRLB_PREFIXED.matcher(text).replaceAll("$1("));
+        String normalised = SWRLB_PREFIXED.matcher(text).replaceAll("$1(");
+        Set<String> newProperties = new java.util.HashSet<>();
+        java.util.regex.Matcher binary = BINARY_ATOM.matcher(normalised);
+        while (binary.find()) {
+            String predicate = binary.group(1);
+            if (!SWRL_KEYWORDS.contains(predicate)
+                    && SWRLBuiltInsVocabulary.getBuiltIn(IRI.create(SWRL_BUILT_INS + predicate)) == null) {
+                newProperties.add(predicate);
+            }
+        }
+        ManchesterOWLSyntaxParser parser = OWLManager.createManchesterParser();
+        parser.setDefaultOntology(reference.ontology());
+        parser.setOWLEntityChecker(new ReferenceEntityChecker(reference, newProperties));
+        parser.setStringToParse("Rule: " + normalised);
         List<OntologyAxiomPair> parsed = parse(text, parser::parseRuleFrame);
         if (parsed.size() != 1 || !(parsed.get(0).getAxiom() instanceof SWRLRule rule)) {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "expected exactly one SWRL rule in '" + text + "'");
@@ -103,7 +122,7 @@ final class Syntax {
         }
         ManchesterOWLSyntaxParser parser = OWLManager.createManchesterParser();
         parser.setDefaultOntology(reference.ontology());
-        parser.setOWLEntityChecker(new ReferenceEntityChecker(reference));
+        parser.setOWLEntityChecker(new ReferenceEntityChecker(reference, Set.of()));
         parser.setStringToParse(text);
         return parser;
     }
@@ -186,9 +205,11 @@ final class Syntax {
         private final Reference reference;
         private final OWLOntology ontology;
         private final OWLDataFactory factory;
+        private final Set<String> newObjectProperties;
 
-        ReferenceEntityChecker(Reference reference) {
+        ReferenceEntityChecker(Reference reference, Set<String> newObjectProperties) {
             this.reference = reference;
+            this.newObjectProperties = newObjectProperties;
             this.ontology = reference.ontology();
             this.factory = reference.factory();
         }
@@ -197,7 +218,8 @@ final class Syntax {
         public OWLClass getOWLClass(String name) {
             OWLClass existing = existing(EntityType.CLASS, name);
             if (existing != null || isAnyEntity(name) || !NEW_CLASS_NAME.matcher(name).matches()
-                    || ManchesterOWLSyntax.parse(name) != null
+                    || ManchesterOWLSyntax.parse(name) != null || SWRL_KEYWORDS.contains(name)
+                    || newObjectProperties.contains(name)
                     || SWRLBuiltInsVocabulary.getBuiltIn(IRI.create(SWRL_BUILT_INS + name)) != null) {
                 return existing;
             }
@@ -207,7 +229,13 @@ final class Syntax {
 
         @Override
         public OWLObjectProperty getOWLObjectProperty(String name) {
-            return existing(EntityType.OBJECT_PROPERTY, name);
+            OWLObjectProperty existing = existing(EntityType.OBJECT_PROPERTY, name);
+            if (existing != null || !newObjectProperties.contains(name) || isAnyEntity(name)
+                    || existing(EntityType.CLASS, name) != null) {
+                return existing;
+            }
+            IRI iri = iriOrNull(EntityType.OBJECT_PROPERTY, name);
+            return iri == null ? null : factory.getOWLObjectProperty(iri);
         }
 
         @Override

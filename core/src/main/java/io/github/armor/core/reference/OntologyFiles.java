@@ -144,6 +144,8 @@ public final class OntologyFiles {
         try {
             Files.createDirectories(target.toAbsolutePath().getParent());
             Path temporary = Files.createTempFile(target.toAbsolutePath().getParent(), ".armor-save", ".tmp");
+            // A temporary file is private (0600); the saved ontology is an ordinary document.
+            Files.setPosixFilePermissions(temporary, java.nio.file.attribute.PosixFilePermissions.fromString("rw-r--r--"));
             try (OutputStream out = Files.newOutputStream(temporary)) {
                 ontology.getOWLOntologyManager().saveOntology(ontology, format, out);
             }
@@ -176,10 +178,27 @@ public final class OntologyFiles {
         try {
             return manager.loadOntologyFromOntologyDocument(source);
         } catch (UnparsableOntologyException e) {
-            throw new ArmorException(ExitCode.LOAD_FAILED, "could not parse '" + name + "': " + firstLines(e), e);
+            throw new ArmorException(ExitCode.LOAD_FAILED, "could not parse '" + name + "': " + parserComplaint(e), e);
         } catch (OWLOntologyCreationException | RuntimeException e) {
             throw new ArmorException(ExitCode.LOAD_FAILED, "could not load '" + name + "': " + firstLines(e), e);
         }
+    }
+
+    /** The complaint of the parser that got furthest into the document, not the OWL API's preamble. */
+    private static String parserComplaint(UnparsableOntologyException e) {
+        String best = null;
+        long furthest = -1;
+        for (var entry : e.getExceptions().entrySet()) {
+            String message = String.valueOf(entry.getValue().getMessage()).strip();
+            java.util.regex.Matcher line = java.util.regex.Pattern.compile("(?i)line[^0-9]{0,3}(\\d+)").matcher(message);
+            long reached = line.find() ? Long.parseLong(line.group(1)) : 0;
+            if (reached > furthest) {
+                furthest = reached;
+                best = entry.getKey().getClass().getSimpleName() + ": " + message;
+            }
+        }
+        String complaint = best == null ? firstLines(e) : best.replaceAll("\\s+", " ");
+        return complaint.length() > 600 ? complaint.substring(0, 600) + " ..." : complaint;
     }
 
     private static String firstLines(Exception e) {
