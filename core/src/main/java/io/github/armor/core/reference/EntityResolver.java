@@ -6,8 +6,9 @@ import io.github.armor.core.api.ExitCode;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.regex.Pattern;
-import java.util.stream.Stream;
 import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.IRI;
 import org.semanticweb.owlapi.model.OWLDataFactory;
@@ -29,12 +30,25 @@ public final class EntityResolver {
     private final OWLDataFactory factory;
     private final String defaultNamespace;
     private final Map<String, String> prefixes;
+    // Short name (after the last '#' or '/') to every IRI ever seen with it. Never pruned:
+    // lookups check the live signature, so an entity removed since is simply not found.
+    private final Map<String, Set<IRI>> byShortName = new ConcurrentHashMap<>();
 
     public EntityResolver(OWLOntology ontology, String defaultNamespace, Map<String, String> prefixes) {
         this.ontology = ontology;
         this.factory = ontology.getOWLOntologyManager().getOWLDataFactory();
         this.defaultNamespace = defaultNamespace;
         this.prefixes = Map.copyOf(prefixes);
+        ontology.signature(Imports.INCLUDED).forEach(this::index);
+        ontology.getOWLOntologyManager().addOntologyChangeListener(changes -> changes.stream()
+                .filter(change -> change.isAddAxiom() && change.getOntology() == ontology)
+                .forEach(change -> change.getAxiom().signature().forEach(this::index)));
+    }
+
+    private void index(OWLEntity entity) {
+        String iri = entity.getIRI().toString();
+        int cut = Math.max(iri.lastIndexOf('#'), iri.lastIndexOf('/'));
+        byShortName.computeIfAbsent(iri.substring(cut + 1), k -> ConcurrentHashMap.newKeySet()).add(entity.getIRI());
     }
 
     public String defaultNamespace() {
@@ -81,10 +95,9 @@ public final class EntityResolver {
         if (ontology.containsEntityInSignature(factory.getOWLEntity(type, inDefault), Imports.INCLUDED)) {
             return inDefault;
         }
-        List<IRI> elsewhere = entitiesOf(type)
-                .map(OWLEntity::getIRI)
-                .filter(iri -> iri.toString().endsWith("#" + name) || iri.toString().endsWith("/" + name))
-                .distinct().sorted().toList();
+        List<IRI> elsewhere = byShortName.getOrDefault(name, Set.of()).stream()
+                .filter(iri -> ontology.containsEntityInSignature(factory.getOWLEntity(type, iri), Imports.INCLUDED))
+                .sorted().toList();
         if (elsewhere.size() == 1) {
             return elsewhere.get(0);
         }
@@ -94,25 +107,6 @@ public final class EntityResolver {
                     + "; write the full IRI or prefix:Name");
         }
         return inDefault;
-    }
-
-    private Stream<? extends OWLEntity> entitiesOf(EntityType<?> type) {
-        if (type == EntityType.CLASS) {
-            return ontology.classesInSignature(Imports.INCLUDED);
-        }
-        if (type == EntityType.NAMED_INDIVIDUAL) {
-            return ontology.individualsInSignature(Imports.INCLUDED);
-        }
-        if (type == EntityType.OBJECT_PROPERTY) {
-            return ontology.objectPropertiesInSignature(Imports.INCLUDED);
-        }
-        if (type == EntityType.DATA_PROPERTY) {
-            return ontology.dataPropertiesInSignature(Imports.INCLUDED);
-        }
-        if (type == EntityType.DATATYPE) {
-            return ontology.datatypesInSignature(Imports.INCLUDED);
-        }
-        return ontology.annotationPropertiesInSignature(Imports.INCLUDED);
     }
 
     private static IRI absoluteIri(String text, String argument) {
