@@ -1,6 +1,7 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 """Fixtures that start the real ARMOR node as a separate process and call it over ROS 2."""
 
+import fcntl
 import os
 import pathlib
 import random
@@ -12,9 +13,30 @@ ONTOLOGIES = REPO / 'ontologies'
 TEST_ONTOLOGIES = REPO / 'tests' / 'ontologies'
 NS = 'http://www.example.org/robotics#'
 
-# One DDS domain per test run, so that parallel runs on one machine never see each other's
-# nodes; it must be chosen before rclpy starts.
-os.environ.setdefault('ROS_DOMAIN_ID', str(random.Random(os.getpid()).randint(1, 232)))
+def _reserve_domain() -> str:
+    """A DDS domain no other test run on this machine is using, held until this process ends.
+
+    Two runs in one domain would each reach the other's node (a request goes to every server
+    of a service name). Child processes inherit ROS_DOMAIN_ID and so share this run's domain.
+    """
+    start = random.Random(os.getpid()).randint(1, 232)
+    for offset in range(232):
+        domain = (start + offset) % 232 + 1
+        handle = open(f'/tmp/armor-ros-domain-{domain}.lock', 'w')
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            handle.close()
+            continue
+        _DOMAIN_LOCKS.append(handle)
+        return str(domain)
+    raise RuntimeError('every DDS domain 1-232 is held by another test run')
+
+
+_DOMAIN_LOCKS = []
+# Chosen before rclpy starts; a run that sets ROS_DOMAIN_ID itself keeps it.
+if 'ROS_DOMAIN_ID' not in os.environ:
+    os.environ['ROS_DOMAIN_ID'] = _reserve_domain()
 
 
 def iri(name: str) -> str:

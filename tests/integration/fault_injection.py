@@ -67,7 +67,8 @@ class Campaign:
         self.singles, self.lists, self.failed = set(), set(), set()
         self.stop = threading.Event()
         ontology = write_abox(scratch / 'durable.owl', rooms=5, robots=5)
-        assert self._call('LOAD', 'FILE', '', str(ontology), '', 'false', 'HERMIT', 'true').success
+        loaded = self._call('LOAD', 'FILE', '', str(ontology), '', 'false', 'HERMIT', 'true')
+        assert loaded.success, f'{loaded.exit_code} {loaded.error_description}'
 
     def _call(self, command, primary, secondary, *args):
         from armor_client import directive
