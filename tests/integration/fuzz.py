@@ -93,13 +93,17 @@ class Fuzzer:
         self.directive = directive
         self.scratch = scratch
         self.rng = random.Random(seed)
-        self.node = start_node(scratch)
+        # Random axioms can send a reasoner into exponential work: as a deployment facing
+        # untrusted input would, the run bounds reasoning, so such a directive answers 211.
+        self.node = start_node(scratch, '-p', 'reasoner_timeout_ms:=10000',
+                               '-p', 'request_timeout_s:=120.0')
         self.armor = ArmorTransport(service_wait_s=120.0)
         for name in ('target', 'shadow'):
             self._ok(name, 'LOAD', 'FILE', '', str(ONTOLOGIES / 'robotics.owl'),
                      'http://www.example.org/robotics', 'false', 'PELLET', 'true')
         self.codes = {}
         self.undefined = []
+        self.slow = []
         self.sent = 0
 
     def _ok(self, reference, command, primary, secondary, *args):
@@ -124,7 +128,11 @@ class Fuzzer:
                     for sent in (request, second):
                         self._shadow(sent)
             else:
+                started = time.monotonic()
                 responses = [self.armor.call(request, timeout_s=300)]
+                if time.monotonic() - started > 5:
+                    self.slow.append((round(time.monotonic() - started, 1), words, args[:4],
+                                      responses[0].exit_code))
                 if responses[0].success:
                     self._shadow(request)
             for response in responses:
@@ -177,6 +185,8 @@ def main():
           f'node alive: {alive}; undefined exit codes: {len(fuzzer.undefined)}; '
           f'axioms differing from the shadow: {len(differences)}')
     print('exit codes: ' + ', '.join(f'{c}: {n}' for c, n in sorted(fuzzer.codes.items())))
+    for seconds, words, args, code in fuzzer.slow:
+        print(f'slow: {seconds} s {" ".join(words)} {[a[:40] for a in args]} -> {code}')
     return 0 if alive and not fuzzer.undefined and not differences else 1
 
 
