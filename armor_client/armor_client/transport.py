@@ -101,7 +101,13 @@ class ArmorTransport:
     def _call(self, client, message, timeout_s):
         if client.srv_name not in self._ready:
             self._wait_until_answered(client)
-        return self._send(client, message, timeout_s)
+        try:
+            return self._send(client, message, timeout_s)
+        except ArmorCallTimeout:
+            # The node behind the service may have been replaced: prove the new one's response
+            # path before the next call instead of risking another lost answer.
+            self._ready.discard(client.srv_name)
+            raise
 
     def _wait_until_answered(self, client) -> None:
         """Block until the service has answered a harmless request from this client.
