@@ -47,11 +47,15 @@ def iris(*names: str) -> list:
     return sorted(iri(n) for n in names)
 
 
-def start_node(scratch: pathlib.Path, *ros_args: str):
+def start_node(scratch: pathlib.Path, *ros_args: str, namespace: str = ''):
     """A node preloading robotics.owl as "robotics", reading and writing in scratch only.
 
     Its state directory is scratch/state, so it restores nothing but its own earlier state.
+    A node started beside the session's node needs a namespace of its own: two nodes serving
+    one service name would both receive every request.
     """
+    if namespace:
+        ros_args = (*ros_args, '-r', f'__ns:={namespace}')
     from armor_client.launch import ArmorNodeProcess
     node = ArmorNodeProcess(scratch / 'armor_service.log', [
         '-p', f'preload_file:={ONTOLOGIES / "robotics.owl"}', '-p', 'preload_reference:=robotics',

@@ -61,19 +61,21 @@ class Campaign:
         self.scratch = scratch
         self.target = target
         self.random = random.Random(seed)
-        self.node = start_node(scratch)
-        self.armor = ArmorTransport(service_wait_s=120.0)
+        self.namespace = f'/durable_{target}'
+        self.node = start_node(scratch, namespace=self.namespace)
+        self.armor = ArmorTransport(namespace=self.namespace, service_wait_s=120.0)
         self.audit = Audit()
         self.singles, self.lists, self.failed = set(), set(), set()
         self.stop = threading.Event()
         ontology = write_abox(scratch / 'durable.owl', rooms=5, robots=5)
-        loaded = self._call('LOAD', 'FILE', '', str(ontology), '', 'false', 'HERMIT', 'true')
+        loaded = self._call('LOAD', 'FILE', '', str(ontology), '', 'false', 'HERMIT', 'true',
+                            timeout_s=300)
         assert loaded.success, f'{loaded.exit_code} {loaded.error_description}'
 
-    def _call(self, command, primary, secondary, *args):
+    def _call(self, command, primary, secondary, *args, timeout_s=CALL_TIMEOUT_S):
         from armor_client import directive
         return self.armor.call(directive('writer', REFERENCE, command, primary, secondary, args),
-                               timeout_s=CALL_TIMEOUT_S)
+                               timeout_s=timeout_s)
 
     def write(self) -> None:
         from armor_client import ArmorError, directive
@@ -108,7 +110,7 @@ class Campaign:
             self.node.process.kill()
             self.node.process.wait()
             self.node.stop()
-            self.node = start_node(self.scratch)
+            self.node = start_node(self.scratch, namespace=self.namespace)
         self.audit.kills += 1
         started = time.monotonic()
         while time.monotonic() - started < 300:
@@ -153,8 +155,8 @@ class Campaign:
 def measure_recovery(scratch: pathlib.Path, individuals: int) -> float:
     """Seconds from SIGKILL of the core until a reference of this many individuals answers."""
     from armor_client import ArmorTransport, directive
-    node = start_node(scratch)
-    armor = ArmorTransport(service_wait_s=120.0)
+    node = start_node(scratch, namespace='/recovery')
+    armor = ArmorTransport(namespace='/recovery', service_wait_s=120.0)
     try:
         rooms = individuals // 5
         abox = write_abox(scratch / 'big.owl', rooms=rooms, robots=individuals - rooms)

@@ -96,8 +96,8 @@ class Fuzzer:
         # Random axioms can send a reasoner into exponential work: as a deployment facing
         # untrusted input would, the run bounds reasoning, so such a directive answers 211.
         self.node = start_node(scratch, '-p', 'reasoner_timeout_ms:=10000',
-                               '-p', 'request_timeout_s:=120.0')
-        self.armor = ArmorTransport(service_wait_s=120.0)
+                               '-p', 'request_timeout_s:=120.0', namespace='/fuzz')
+        self.armor = ArmorTransport(namespace='/fuzz', service_wait_s=120.0)
         for name in ('target', 'shadow'):
             self._ok(name, 'LOAD', 'FILE', '', str(ONTOLOGIES / 'robotics.owl'),
                      'http://www.example.org/robotics', 'false', 'PELLET', 'true')

@@ -26,6 +26,8 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from conftest import NS, ONTOLOGIES, start_node  # noqa: E402
 
 REFERENCES = ['load0', 'load1', 'load2']
+NAMESPACE = '/load'
+
 MOUNTED = 102
 
 
@@ -34,7 +36,7 @@ def client(index: int, operations: int, out: pathlib.Path) -> None:
     from armor_client import ArmorTransport, directive
     rng = random.Random(index)
     me = f'client{index}'
-    armor = ArmorTransport(service_wait_s=120.0)
+    armor = ArmorTransport(namespace=NAMESPACE, service_wait_s=120.0)
     added = {r: [] for r in REFERENCES}
     counters = {r: 0 for r in REFERENCES}
     acknowledged, sessions, latencies, errors = [], [], [], []
@@ -92,8 +94,8 @@ def client(index: int, operations: int, out: pathlib.Path) -> None:
 def run(scratch: pathlib.Path, clients: int, operations: int) -> dict:
     """Start a node and the clients; audit the result. Returns the figures and the violations."""
     from armor_client import ArmorTransport, directive
-    node = start_node(scratch)
-    armor = ArmorTransport(service_wait_s=120.0)
+    node = start_node(scratch, namespace=NAMESPACE)
+    armor = ArmorTransport(namespace=NAMESPACE, service_wait_s=120.0)
     try:
         for reference in REFERENCES:
             assert armor.call(directive('coordinator', reference, 'LOAD', 'FILE', '', [
