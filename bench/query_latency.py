@@ -1,90 +1,138 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-"""Round-trip latency of one QUERY over ROS 2 between two processes, against the echo floor.
+"""Benchmark 1, transport overhead: round trips through the service against a bare echo floor.
 
-    python bench/query_latency.py [--calls 1000]
+    python bench/query_latency.py [--calls 2000] [--commands QUERY,ADD]
 
-Starts an ARMOR node (robotics.owl preloaded) and a bare rclpy echo service using the same
-ArmorDirective message, then alternates calls to both from this process and prints the
-median, p99 and the ratio service/floor.
+Starts an ARMOR node (robotics.owl preloaded as "robotics", default settings: HermiT, reasoner
+synchronised after every change, journal forced to disk) and two bare rclpy echo services
+answering the same ArmorDirective message: one on rclpy.spin (the floor), one on the executor
+the node uses. Calls from this process alternate between them, so every path sees the same
+noise, and the ratios service/floor are the figures that matter on a shared machine.
+
+QUERY is QUERY IND CLASS OccupiedRoom (an inferred answer). ADD is ADD IND CLASS of a new
+individual each call, on the preloaded reference and on a second reference whose reasoner is
+buffered (it only sees changes at REASON), which isolates the reasoner's share of an ADD.
+Run as a script it measures and prints; the suite (bench/suite.py) calls measure().
 """
 
 import argparse
-import os
+import json
 import pathlib
-import random
-import statistics
 import subprocess
 import sys
 import tempfile
 import threading
 import time
 
-REPO = pathlib.Path(__file__).resolve().parents[1]
-os.environ.setdefault('ROS_DOMAIN_ID', str(random.Random(os.getpid()).randint(1, 100)))
+from harness import REPO, BenchNode, CoreSnapshot, Deadline, latency_summary
+
+COMMANDS = ('QUERY', 'ADD')
 
 
-def percentile(samples, fraction):
-    ordered = sorted(samples)
-    return ordered[min(len(ordered) - 1, int(fraction * len(ordered)))]
+class EchoFloor:
+    """A bare echo service in its own process, and a client for it on the transport's node."""
+
+    def __init__(self, node: BenchNode, executor: str):
+        from armor_msgs.srv import ArmorDirective
+        from echo_service import ECHO_SERVICE
+        namespace = f'{node.namespace}_echo_{executor}'
+        self.process = subprocess.Popen(
+            [sys.executable, str(REPO / 'bench' / 'echo_service.py'), '--namespace', namespace,
+             '--executor', executor])
+        self.client = node.transport.node.create_client(ArmorDirective,
+                                                        f'{namespace}/{ECHO_SERVICE}')
+        if not self.client.wait_for_service(timeout_sec=60):
+            raise RuntimeError(f'echo service ({executor}) did not come up')
+        self.request = ArmorDirective.Request(
+            armor_request=BenchNode.directive('robotics', 'QUERY IND CLASS', 'OccupiedRoom'))
+
+    def call(self):
+        """One round trip, waiting exactly as ArmorTransport does (executor thread, an Event)."""
+        done = threading.Event()
+        future = self.client.call_async(self.request)
+        future.add_done_callback(lambda _: done.set())
+        if not done.wait(30):
+            raise RuntimeError('echo service did not answer within 30 s')
+        return future.result()
+
+    def stop(self):
+        self.process.terminate()
+        self.process.wait()
+
+
+def _timed(call):
+    start = time.perf_counter()
+    answer = call()
+    return time.perf_counter() - start, answer
+
+
+def measure(calls: int, scratch: pathlib.Path, snapshot: CoreSnapshot, commands=COMMANDS,
+            budget_s: float = 300) -> dict:
+    """Per command: latency summaries of the service paths and of both echo services.
+
+    Each command stops at `calls` measured rounds or after `budget_s`, whichever comes first
+    (an ADD gets slower as the ontology grows); the summaries say how many calls they cover.
+    """
+    node = BenchNode(scratch, snapshot, preload_robotics=True)
+    floors = {}
+    try:
+        floors = {'floor': EchoFloor(node, 'single'), 'multi_echo': EchoFloor(node, 'multi')}
+        loaded = node.call('robotics_buffered', 'LOAD FILE',
+                           str(REPO / 'ontologies' / 'robotics.owl'), '', 'false', 'HERMIT',
+                           'true', timeout_s=120)
+        if not loaded.success:
+            raise RuntimeError(f'LOAD failed: {loaded.exit_code} {loaded.error_description}')
+        paths = {
+            'QUERY': {'service': lambda i: node.call('robotics', 'QUERY IND CLASS',
+                                                     'OccupiedRoom')},
+            'ADD': {'service': lambda i: node.call('robotics', 'ADD IND CLASS', f'probe{i}',
+                                                   'Robot'),
+                    'service_buffered_reasoner': lambda i: node.call(
+                        'robotics_buffered', 'ADD IND CLASS', f'probe{i}', 'Robot')},
+        }
+        results = {}
+        for command in commands:
+            samples = {name: [] for name in [*paths[command], *floors]}
+            warmup = min(50, calls)
+            deadline = Deadline(budget_s)
+            for i in range(-warmup, calls):
+                if deadline.expired():
+                    break
+                for name, call in paths[command].items():
+                    seconds, answer = _timed(lambda: call(i + warmup))
+                    if not answer.success:
+                        raise RuntimeError(f'{command} failed: {answer.exit_code} '
+                                           f'{answer.error_description}')
+                    if i >= 0:
+                        samples[name].append(seconds)
+                for name, floor in floors.items():
+                    seconds, _ = _timed(floor.call)
+                    if i >= 0:
+                        samples[name].append(seconds)
+            results[command] = {name: latency_summary(values) for name, values in samples.items()}
+        return results
+    finally:
+        for floor in floors.values():
+            floor.stop()
+        node.stop()
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
-    parser.add_argument('--calls', type=int, default=1000)
+    parser.add_argument('--calls', type=int, default=2000)
+    parser.add_argument('--budget-s', type=float, default=300, help='per command')
+    parser.add_argument('--commands', default='QUERY',
+                        help='comma-separated subset of ' + ','.join(COMMANDS))
     options = parser.parse_args()
-
-    from armor_client import ArmorTransport, directive
-    from armor_client.launch import ArmorNodeProcess
-    from armor_msgs.srv import ArmorDirective
-
     scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
-    node = ArmorNodeProcess(scratch / 'node.log', [
-        '-p', f'preload_file:={REPO / "ontologies" / "robotics.owl"}',
-        '-p', 'preload_reference:=robotics'])
-    echo = subprocess.Popen([sys.executable, str(REPO / 'bench' / 'echo_service.py')])
-    armor = ArmorTransport(service_wait_s=120)
-    echo_client = armor.node.create_client(ArmorDirective, 'armor_echo_srv')
-    try:
-        query = directive('bench', 'robotics', 'QUERY', 'IND', 'CLASS', ['OccupiedRoom'])
-        assert armor.call(query, timeout_s=120).queried_objects, node.log()
-        if not echo_client.wait_for_service(timeout_sec=60):
-            raise RuntimeError('echo service did not come up')
-        echo_request = ArmorDirective.Request(armor_request=query)
-
-        def call_echo():
-            # Waits exactly as ArmorTransport does: the same executor thread, an Event.
-            done = threading.Event()
-            future = echo_client.call_async(echo_request)
-            future.add_done_callback(lambda _: done.set())
-            done.wait()
-            return future.result()
-
-        for _ in range(50):  # warm-up: discovery, JIT, caches
-            armor.call(query)
-            call_echo()
-        service, floor = [], []
-        for _ in range(options.calls):
-            start = time.perf_counter()
-            armor.call(query)
-            service.append(time.perf_counter() - start)
-            start = time.perf_counter()
-            call_echo()
-            floor.append(time.perf_counter() - start)
-    finally:
-        armor.close()
-        echo.terminate()
-        echo.wait()
-        node.stop()
-
-    def ms(value):
-        return f'{value * 1000:.3f} ms'
-
-    print(f'QUERY IND CLASS round trip over ROS 2, two processes, {options.calls} calls each')
-    print(f'| path | p50 | p99 |\n|---|---|---|')
-    print(f'| ARMOR service | {ms(statistics.median(service))} | {ms(percentile(service, 0.99))} |')
-    print(f'| bare rclpy echo (floor) | {ms(statistics.median(floor))} | '
-          f'{ms(percentile(floor, 0.99))} |')
-    print(f'ratio p50 service/floor: {statistics.median(service) / statistics.median(floor):.2f}')
+    results = measure(options.calls, scratch, CoreSnapshot(scratch),
+                      commands=options.commands.split(','), budget_s=options.budget_s)
+    print(json.dumps(results, indent=2))
+    for command, paths in results.items():
+        floor = paths['floor']['p50_ms']
+        for name, figures in paths.items():
+            print(f'{command:5} {name:26} p50 {figures["p50_ms"]:8.3f} ms  '
+                  f'p99 {figures["p99_ms"]:8.3f} ms  p50/floor {figures["p50_ms"] / floor:5.2f}')
 
 
 if __name__ == '__main__':

@@ -1,0 +1,175 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""Where the knowledge core spends its time: a JDK Flight Recorder profile of a running node.
+
+    python bench/core_profile.py [--smoke]
+
+A node is started with a flight recording in its core (the node parameter jvm_options), the
+workload runs, `jcmd JFR.dump` saves the recording (the core is halted, not shut down, when the
+node stops, so the JVM would not write it itself), and `jfr print` lists its execution
+samples. Each sample is put in the first component, in COMPONENTS order, that has a frame
+anywhere on its stack: the share of samples per component is where the time goes.
+"""
+
+import argparse
+import collections
+import json
+import pathlib
+import re
+import subprocess
+import tempfile
+import time
+
+from batch_throughput import directive_list
+from harness import REPO, SCALES, BenchNode, CoreSnapshot, Deadline
+
+COMPONENTS = (  # (component, frame prefixes); the first match on a sample's stack wins
+    ('naming: EntityResolver (plain name -> IRI)',
+     ('io.github.armor.core.reference.EntityResolver',)),
+    ('reasoner', ('org.semanticweb.HermiT', 'openllet', 'uk.ac.manchester.cs.jfact',
+                  'org.semanticweb.elk')),
+    ('journal (durability)', ('io.github.armor.core.durability',)),
+    ('OWL API ontology changes',
+     ('uk.ac.manchester.cs.owl.owlapi.OWLOntologyManagerImpl.applyChanges',
+      'uk.ac.manchester.cs.owl.owlapi.OWLImmutableOntologyImpl',
+      'uk.ac.manchester.cs.owl.owlapi.Internals')),
+    # Every worker stack has CoreServer at its bottom: only (de)serialising and socket I/O count.
+    ('wire: socket and JSON', ('com.google.gson', 'io.github.armor.core.server.WireCodec',
+                               'io.github.armor.core.server.CoreServer.readFrame',
+                               'io.github.armor.core.server.CoreServer.writeFrame')),
+    ('other ARMOR core code', ('io.github.armor.core.ArmorCore', 'io.github.armor.core.command',
+                               'io.github.armor.core.reference')),
+)
+_FRAME = re.compile(r'^\s{4}(\S+)\(')
+
+
+def jfr_options(recording: pathlib.Path) -> str:
+    """jvm_options value (a ROS string list) with a recording at 10 ms sampling, deep stacks."""
+    return ('["-Xmx4g", "-XX:+ExitOnOutOfMemoryError", '
+            f'"-XX:StartFlightRecording=name=armor,settings=profile,filename={recording}", '
+            '"-XX:FlightRecorderOptions=stackdepth=512"]')
+
+
+def dump(core_pid: int, recording: pathlib.Path) -> None:
+    subprocess.run(['jcmd', str(core_pid), 'JFR.dump', 'name=armor', f'filename={recording}'],
+                   check=True, capture_output=True, timeout=120)
+
+
+def samples(recording: pathlib.Path) -> list:
+    """Stacks (top frame first, as 'package.Class.method') of the recording's execution samples."""
+    text = subprocess.run(['jfr', 'print', '--stack-depth', '512', '--events',
+                           'jdk.ExecutionSample', str(recording)],
+                          check=True, capture_output=True, text=True).stdout
+    stacks = []
+    for event in text.split('jdk.ExecutionSample {')[1:]:
+        stacks.append([m.group(1) for m in map(_FRAME.match, event.splitlines()) if m])
+    return stacks
+
+
+def summarise(stacks: list, top: int = 8) -> dict:
+    """Share of samples per component, the hottest top frames, and the hottest ARMOR frames."""
+    components = collections.Counter()
+    leaves = collections.Counter()
+    armor_frames = collections.Counter()
+    for stack in stacks:
+        if not stack:
+            continue
+        leaves[stack[0]] += 1
+        component = next((name for name, prefixes in COMPONENTS
+                          if any(frame.startswith(prefixes) for frame in stack)),
+                         'outside the directive path (server loop, JIT, class loading)')
+        components[component] += 1
+        for frame in set(stack):
+            if frame.startswith('io.github.armor.core'):
+                armor_frames[frame] += 1
+    total = max(1, sum(components.values()))
+    return {'samples': sum(components.values()),
+            'components': [(name, count / total) for name, count in components.most_common()],
+            'top_frames': [(name, count / total) for name, count in leaves.most_common(top)],
+            'armor_frames': [(name, count / total)
+                             for name, count in armor_frames.most_common(top)]}
+
+
+def profile_batch(scratch: pathlib.Path, snapshot: CoreSnapshot, seconds: float,
+                  list_size: int = 1000) -> dict:
+    """The core while it answers lists of ADDs through the service (a buffered reasoner)."""
+    recording = scratch / 'batch.jfr'
+    node = BenchNode(scratch, snapshot, parameters={'jvm_options': jfr_options(recording)})
+    try:
+        node.call('profiled', 'LOAD FILE', str(REPO / 'ontologies' / 'robotics.owl'), '', 'false',
+                  'HERMIT', 'true', timeout_s=120)
+        deadline = Deadline(seconds)
+        lists = 0
+        while lists == 0 or not deadline.expired():
+            node.transport.call_list(directive_list('profiled', lists, list_size),
+                                     timeout_s=600)
+            lists += 1
+        dump(node.process.core_pid(), recording)
+    finally:
+        node.stop()
+    return {'workload': f'{lists} lists of {list_size} ADD directives through '
+                        'armor_interface_serialized_srv (buffered HermiT)',
+            **summarise(samples(recording))}
+
+
+def profile_single_adds(scratch: pathlib.Path, snapshot: CoreSnapshot, seconds: float) -> dict:
+    """The core while it answers single ADDs of new individuals on the preloaded reference."""
+    recording = scratch / 'add.jfr'
+    node = BenchNode(scratch, snapshot, parameters={'jvm_options': jfr_options(recording)},
+                     preload_robotics=True)
+    try:
+        deadline = Deadline(seconds)
+        calls = 0
+        while calls == 0 or not deadline.expired():
+            node.call('robotics', 'ADD IND CLASS', f'probe{calls}', 'Robot', timeout_s=600)
+            calls += 1
+        dump(node.process.core_pid(), recording)
+    finally:
+        node.stop()
+    return {'workload': f'{calls} single ADD IND CLASS directives (a new individual each) on '
+                        'the preloaded reference with the defaults (HermiT, non-buffered)',
+            **summarise(samples(recording))}
+
+
+def profile_cycle(scratch: pathlib.Path, snapshot: CoreSnapshot, abox_path: pathlib.Path,
+                  individuals: int, reasoner: str, buffered: bool, with_reason: bool,
+                  seconds: float) -> dict:
+    """The core while it runs the reasoning cycle of benchmark 3 on one reasoner and mode."""
+    from abox import RoboticsABox
+    recording = scratch / 'cycle.jfr'
+    node = BenchNode(scratch, snapshot, parameters={'jvm_options': jfr_options(recording)})
+    workload = RoboticsABox(individuals)
+    try:
+        node.call('profiled', 'LOAD FILE', str(abox_path), '', 'false', reasoner,
+                  str(buffered).lower(), timeout_s=600)
+        deadline = Deadline(seconds)
+        cycles = 0
+        while cycles == 0 or (not deadline.expired() and workload.moves_left):
+            move = workload.next_move()
+            node.call('profiled', 'REPLACE OBJECTPROP IND', 'isIn', move.agent, move.new_room,
+                      move.old_room, timeout_s=600)
+            if with_reason:
+                node.call('profiled', 'REASON', timeout_s=600)
+            node.call('profiled', 'QUERY IND CLASS', 'OccupiedRoom', timeout_s=600)
+            cycles += 1
+        dump(node.process.core_pid(), recording)
+    finally:
+        node.stop()
+    mode = ('buffered' if buffered else 'non-buffered') + ('' if with_reason else ', no REASON')
+    return {'workload': f'{cycles} reasoning cycles at {individuals} individuals, {reasoner} '
+                        f'({mode}), including the load',
+            **summarise(samples(recording))}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
+    parser.add_argument('--smoke', action='store_true', help='tiny sizes, a few seconds')
+    options = parser.parse_args()
+    scale = SCALES['smoke' if options.smoke else 'full']
+    scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
+    started = time.monotonic()
+    print(json.dumps(profile_batch(scratch, CoreSnapshot(scratch), scale.profile_s), indent=2))
+    print(f'{time.monotonic() - started:.0f} s')
+
+
+if __name__ == '__main__':
+    main()

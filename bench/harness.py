@@ -1,0 +1,178 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""What every benchmark of the suite shares: an isolated node, a frozen core, statistics, budgets.
+
+Isolation matters on this machine: other engineers run nodes, load tests and core rebuilds at
+the same time. So a benchmark node lives in a namespace of its own (a DDS domain shared by
+accident cannot reach it), keeps its journal in a scratch directory, and runs a copy of the
+core taken when the suite starts (a rebuild of core/target cannot change it mid-run).
+"""
+
+import dataclasses
+import os
+import pathlib
+import random
+import shutil
+import statistics
+import subprocess
+import time
+from typing import Dict, List, Optional, Sequence
+
+REPO = pathlib.Path(__file__).resolve().parents[1]
+CORE_TARGET = REPO / 'core' / 'target'
+HARNESS_SOURCE = (REPO / 'core' / 'src' / 'test' / 'java' / 'io' / 'github' / 'armor' / 'core'
+                  / 'bench' / 'InProcessBatchBench.java')
+HARNESS_CLASS = 'io.github.armor.core.bench.InProcessBatchBench'
+
+# Chosen before rclpy starts in this process; children inherit it.
+os.environ.setdefault('ROS_DOMAIN_ID', str(random.SystemRandom().randint(1, 100)))
+
+
+def percentile(samples: Sequence[float], fraction: float) -> float:
+    ordered = sorted(samples)
+    return ordered[min(len(ordered) - 1, int(fraction * len(ordered)))]
+
+
+def latency_summary(samples: Sequence[float]) -> Dict[str, float]:
+    """p50/p99/mean in milliseconds and the sample count."""
+    return {'calls': len(samples), 'p50_ms': statistics.median(samples) * 1000,
+            'p99_ms': percentile(samples, 0.99) * 1000, 'mean_ms': statistics.fmean(samples) * 1000}
+
+
+class Deadline:
+    """A wall-clock budget: how much is left, and whether it ran out."""
+
+    def __init__(self, seconds: float):
+        self.seconds = seconds
+        self._end = time.monotonic() + seconds
+
+    def left(self) -> float:
+        return max(0.0, self._end - time.monotonic())
+
+    def expired(self) -> bool:
+        return self.left() <= 0.0
+
+
+class CoreSnapshot:
+    """A private copy of the core jar, its libraries and the in-process harness classes."""
+
+    def __init__(self, scratch: pathlib.Path):
+        self.root = scratch / 'core'
+        if not (CORE_TARGET / 'armor-core.jar').is_file():
+            raise RuntimeError('core/target/armor-core.jar is missing: run make setup')
+        compiled = CORE_TARGET / 'test-classes' / (HARNESS_CLASS.replace('.', '/') + '.class')
+        if not compiled.is_file() or compiled.stat().st_mtime < HARNESS_SOURCE.stat().st_mtime:
+            # make bench compiles it; this covers a suite started by hand or by the smoke test.
+            subprocess.run(['mvn', '-q', '-o', '-f', str(REPO / 'core' / 'pom.xml'),
+                            'test-compile'], check=True)
+        self.root.mkdir(parents=True)
+        shutil.copy2(CORE_TARGET / 'armor-core.jar', self.root)
+        shutil.copytree(CORE_TARGET / 'lib', self.root / 'lib')
+        shutil.copytree(compiled.parent, self.root / 'test-classes' / compiled.parent.relative_to(
+            CORE_TARGET / 'test-classes'))
+        self.jar = self.root / 'armor-core.jar'
+
+    @property
+    def classpath(self) -> str:
+        return f'{self.root / "test-classes"}:{self.jar}:{self.root / "lib"}/*'
+
+    def library_versions(self) -> Dict[str, str]:
+        """Versions of the OWL API and the reasoners, read from the jar names on the classpath."""
+        wanted = {'owlapi-api': 'OWL API', 'org.semanticweb.hermit': 'HermiT',
+                  'openllet-core': 'Openllet', 'jfact': 'JFact', 'elk-reasoner': 'ELK'}
+        found = {}
+        for jar in sorted((self.root / 'lib').glob('*.jar')):
+            name, _, version = jar.stem.rpartition('-')
+            if name in wanted:
+                found[wanted[name]] = version
+        return found
+
+
+def peak_rss_mib(pid: int) -> Dict[str, float]:
+    """Current (VmRSS) and peak (VmHWM) resident memory of a live process, in MiB."""
+    fields = {}
+    for line in pathlib.Path(f'/proc/{pid}/status').read_text().splitlines():
+        key, _, value = line.partition(':')
+        if key in ('VmRSS', 'VmHWM'):
+            fields[key] = int(value.split()[0]) / 1024
+    return {'rss_mib': fields['VmRSS'], 'peak_mib': fields['VmHWM']}
+
+
+_namespaces = iter(range(1, 1 << 30))
+
+
+class BenchNode:
+    """An ARMOR node for one benchmark, its transport, and the ids needed to measure it.
+
+    Args:
+        scratch: directory for the log, the journal and files the node may read.
+        snapshot: the frozen core the node runs.
+        parameters: extra node parameters, name -> value text.
+        preload_robotics: load ontologies/robotics.owl as reference "robotics" at start.
+    """
+
+    def __init__(self, scratch: pathlib.Path, snapshot: CoreSnapshot,
+                 parameters: Optional[Dict[str, str]] = None, preload_robotics: bool = False):
+        from armor_client import ArmorTransport
+        from armor_client.launch import ArmorNodeProcess
+        self.namespace = f'/armor_bench_{os.getpid()}_{next(_namespaces)}'
+        state = scratch / f'state{self.namespace.replace("/", "_")}'
+        arguments = ['-r', f'__ns:={self.namespace}',
+                     '-p', f'core_jar:={snapshot.jar}',
+                     '-p', f'state_dir:={state}', '-p', 'restore_state:=false',
+                     '-p', f'allowed_dirs:=["{scratch}", "{REPO / "ontologies"}"]']
+        if preload_robotics:
+            arguments += ['-p', f'preload_file:={REPO / "ontologies" / "robotics.owl"}',
+                          '-p', 'preload_reference:=robotics']
+        for name, value in (parameters or {}).items():
+            arguments += ['-p', f'{name}:={value}']
+        self.process = ArmorNodeProcess(scratch / f'node{self.namespace.replace("/", "_")}.log',
+                                        arguments, cwd=scratch)
+        self.transport = ArmorTransport(namespace=self.namespace, service_wait_s=120)
+        # The first call waits for discovery and the core; everything after is measurable.
+        self.call('', 'GET ALL REFS', timeout_s=180)
+
+    def call(self, reference: str, words: str, *args, timeout_s: Optional[float] = None):
+        """call('ref', 'COMMAND PRIMARY SECONDARY', *args) -> ArmorDirectiveRes."""
+        return self.transport.call(self.directive(reference, words, *args), timeout_s=timeout_s)
+
+    @staticmethod
+    def directive(reference: str, words: str, *args):
+        from armor_client import directive
+        command, primary, secondary = (words.split() + ['', '', ''])[:3]
+        return directive('bench', reference, command, primary, secondary, args)
+
+    def memory(self) -> Dict[str, Dict[str, float]]:
+        """Resident memory of the node (Python) and its knowledge core (Java)."""
+        return {'node': peak_rss_mib(self.process.process.pid),
+                'core': peak_rss_mib(self.process.core_pid())}
+
+    def stop(self) -> None:
+        self.transport.close()
+        self.process.stop()
+
+
+@dataclasses.dataclass
+class Scale:
+    """How much the suite measures: `full` for the report, `smoke` to prove it still runs."""
+
+    name: str
+    latency_calls: int
+    batch_lists: Dict[int, int]          # list size -> measured lists
+    warmup_lists: int                    # per configuration and path, before measuring
+    batch_budget_s: float                # per path and configuration
+    abox_sizes: List[int]
+    cycles: int                          # per reasoner and mode
+    cycle_budget_s: Dict[int, float]     # per reasoner and mode, by ABox size
+    owlready_budget_s: Dict[int, float]  # per owlready2 reasoner, by ABox size
+    profile_s: float
+
+
+SCALES = {
+    'full': Scale('full', latency_calls=2000, batch_lists={100: 30, 1000: 5}, warmup_lists=2,
+                  batch_budget_s=45,
+                  abox_sizes=[1000, 10000], cycles=20, cycle_budget_s={1000: 60, 10000: 120},
+                  owlready_budget_s={1000: 90, 10000: 150}, profile_s=20),
+    'smoke': Scale('smoke', latency_calls=20, batch_lists={10: 2, 100: 1}, warmup_lists=1,
+                   batch_budget_s=5, abox_sizes=[20], cycles=1, cycle_budget_s={20: 15},
+                   owlready_budget_s={20: 20}, profile_s=2),
+}

@@ -1,0 +1,123 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""The benchmark suite: every benchmark in one run, written to a Markdown report.
+
+    python bench/suite.py [--scale full|smoke] [--report bench/REPORT.md]
+
+`make bench` runs it at full scale (about half an hour on 2 cores) and writes bench/REPORT.md.
+`--scale smoke` runs every benchmark on tiny sizes in about a minute and a half
+(tests/test_bench_smoke.py), so the suite cannot rot. The scale can also be set with the
+environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
+(query_latency.py, batch_throughput.py, reasoning_cycle.py, core_profile.py).
+"""
+
+import argparse
+import datetime
+import json
+import os
+import pathlib
+import platform
+import subprocess
+import sys
+import tempfile
+import time
+
+from harness import REPO, SCALES, CoreSnapshot
+import batch_throughput
+import core_profile
+import query_latency
+import reasoning_cycle
+import report
+
+
+def _command_output(*command: str) -> str:
+    try:
+        completed = subprocess.run(command, capture_output=True, text=True, timeout=60)
+    except (OSError, subprocess.TimeoutExpired):
+        return 'unknown'
+    return (completed.stdout + completed.stderr).strip()
+
+
+def machine() -> dict:
+    cpu = next((line.split(':', 1)[1].strip() for line in
+                pathlib.Path('/proc/cpuinfo').read_text().splitlines()
+                if line.startswith('model name')), platform.processor() or 'unknown')
+    memory_kib = next(int(line.split()[1]) for line in
+                      pathlib.Path('/proc/meminfo').read_text().splitlines()
+                      if line.startswith('MemTotal'))
+    return {'CPU': cpu, 'cores (nproc)': os.cpu_count(),
+            'memory': f'{memory_kib / 1024 / 1024:.1f} GiB', 'kernel': platform.release(),
+            'load average at the start': ', '.join(f'{v:.2f}' for v in os.getloadavg())}
+
+
+def versions(snapshot: CoreSnapshot) -> dict:
+    from importlib import metadata
+
+    def package(name):
+        try:
+            return metadata.version(name)
+        except metadata.PackageNotFoundError:
+            return 'not installed'
+
+    found = {'Java': _command_output('java', '-version').splitlines()[0],
+             'Python': platform.python_version(), 'rclpy': package('rclpy'),
+             'Fast DDS': package('ros-fastdds'), 'owlready2': package('owlready2')}
+    found.update(snapshot.library_versions())
+    return found
+
+
+def run(scale_name: str, report_path: pathlib.Path) -> dict:
+    """Runs every benchmark, writes the report, and returns the raw results."""
+    scale = SCALES[scale_name]
+    started = time.monotonic()
+    scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
+    snapshot = CoreSnapshot(scratch)
+    results = {'scale': scale_name,
+               'date': datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d %H:%M UTC'),
+               'commit': _command_output('git', '-C', str(REPO), 'describe', '--always',
+                                         '--dirty'),
+               'machine': machine(), 'versions': versions(snapshot)}
+
+    def stage(name):
+        print(f'[bench {time.monotonic() - started:6.0f} s] {name}', file=sys.stderr, flush=True)
+
+    stage('1. transport overhead')
+    results['transport'] = {'calls': scale.latency_calls,
+                            **query_latency.measure(scale.latency_calls, scratch, snapshot)}
+    stage('2. batch throughput')
+    results['batch'] = batch_throughput.measure(scale.batch_lists, scale.batch_budget_s,
+                                                scratch, snapshot, scale.warmup_lists)
+    stage('3 and 4. reasoning under updates, memory')
+    results['reasoning'] = reasoning_cycle.measure(
+        scale.abox_sizes, scale.cycles, scale.cycle_budget_s, scale.owlready_budget_s, scratch,
+        snapshot)
+    stage('5. profiles')
+    choice, _ = report.recommend(results['reasoning'])
+    reasoner, mode = choice or ('HERMIT', 'non-buffered')
+    buffered, with_reason = reasoning_cycle.MODES[mode]
+    largest = max(scale.abox_sizes)
+    results['profiles'] = {
+        'Single ADDs': core_profile.profile_single_adds(scratch, snapshot, scale.profile_s),
+        'Batch': core_profile.profile_batch(scratch, snapshot, scale.profile_s,
+                                            max(scale.batch_lists)),
+        'Reasoning cycle': core_profile.profile_cycle(
+            scratch, snapshot, scratch / f'abox{largest}.owl', largest, reasoner, buffered,
+            with_reason, scale.profile_s),
+    }
+    results['duration_s'] = time.monotonic() - started
+    (scratch / 'results.json').write_text(json.dumps(results, indent=2, default=str))
+    report_path.write_text(report.render(results) + '\n')
+    stage(f'report written to {report_path} (raw figures: {scratch / "results.json"})')
+    return results
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
+    parser.add_argument('--scale', choices=sorted(SCALES),
+                        default=os.environ.get('ARMOR_BENCH_SCALE', 'full'))
+    parser.add_argument('--report', type=pathlib.Path, default=REPO / 'bench' / 'REPORT.md')
+    options = parser.parse_args()
+    run(options.scale, options.report)
+
+
+if __name__ == '__main__':
+    main()
