@@ -55,6 +55,20 @@ class DispatchTest {
     }
 
     @Test
+    void hugeGarbageIsRefusedWithoutHanging() {
+        CoreFixture f = fixture();
+        f.loadRobotics("map", "PELLET", true);
+        String huge = "x".repeat(100_000);
+        // A generous bound: this guards against a hang (it took minutes), not a speed target.
+        org.junit.jupiter.api.Assertions.assertTimeoutPreemptively(java.time.Duration.ofSeconds(30), () -> {
+            assertFails(f.run("map", "ADD SWRL", "rule", huge), 208);
+            assertFails(f.run("map", "QUERY IND DL", huge + " and"), 208);
+            assertFails(f.run("map", "ADD AXIOM", huge), 208);
+        });
+        assertEquals(iris("robot1"), f.ok("map", "QUERY IND CLASS", "Robot").queriedObjects());
+    }
+
+    @Test
     void loadErrorsAreErrorsAndPathsAreConfined() throws Exception {
         CoreFixture f = fixture();
         Path broken = Files.writeString(scratch.resolve("broken.owl"), "<rdf:RDF this is not xml");

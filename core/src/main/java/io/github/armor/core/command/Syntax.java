@@ -47,7 +47,10 @@ final class Syntax {
     // Protégé writes built-ins as swrlb:lessThan; the OWL API parser knows them by bare name or full IRI.
     private static final Pattern SWRLB_PREFIXED = Pattern.compile("\\bswrlb:([A-Za-z]+)\\s*\\(");
     private static final int EXPECTED_TOKENS_SHOWN = 12;
-    private static final Pattern BINARY_ATOM = Pattern.compile("([\\p{L}_][\\p{L}\\p{N}_.\\-]*)\\s*\\(\\s*\\?[^,()]+,");
+    // Starts only where a name starts and never gives characters back: linear even on a
+    // 100,000-character argument (a free start backtracked quadratically).
+    private static final Pattern BINARY_ATOM = Pattern.compile(
+            "(?<![\\p{L}\\p{N}_.\\-])([\\p{L}_][\\p{L}\\p{N}_.\\-]*+)\\s*+\\(\\s*+\\?[^,()]++,");
     // SWRL's own atoms, never entity names.
     private static final Set<String> SWRL_KEYWORDS = Set.of("DifferentFrom", "SameAs", "differentFrom", "sameAs");
     private static final String SWRL_BUILT_INS = "http://www.w3.org/2003/11/swrlb#";
@@ -96,7 +99,7 @@ final class Syntax {
         parser.setStringToParse("Rule: " + normalised);
         List<OntologyAxiomPair> parsed = parse(text, parser::parseRuleFrame);
         if (parsed.size() != 1 || !(parsed.get(0).getAxiom() instanceof SWRLRule rule)) {
-            throw new ArmorException(ExitCode.BAD_SYNTAX, "expected exactly one SWRL rule in '" + text + "'");
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "expected exactly one SWRL rule in '" + abbreviated(text) + "'");
         }
         OWLDataFactory factory = reference.factory();
         return factory.getSWRLRule(rule.body().toList(), rule.head().toList(),
@@ -116,7 +119,7 @@ final class Syntax {
             String before = text.substring(0, dangling.end());
             int line = (int) before.chars().filter(c -> c == '\n').count() + 1;
             int column = dangling.end() - before.lastIndexOf('\n');
-            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + text + "': no operand after '"
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + abbreviated(text) + "': no operand after '"
                     + dangling.group(1) + "' at line " + line + " column " + column + ". Expected one of: Class name"
                     + " Object property name Data property name ( {");
         }
@@ -131,7 +134,7 @@ final class Syntax {
         try {
             return parse.get();
         } catch (OWLParserException e) {
-            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + text + "': " + shortened(e), e);
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + abbreviated(text) + "': " + shortened(e), e);
         }
     }
 
@@ -153,6 +156,11 @@ final class Syntax {
             }
         }
         return complaint.length() > 300 ? complaint.substring(0, 300) + " ..." : complaint;
+    }
+
+    /** Client text quoted in an error, cut so that a huge argument does not make a huge answer. */
+    private static String abbreviated(String text) {
+        return text.length() <= 200 ? text : text.substring(0, 200) + "... (" + text.length() + " characters)";
     }
 
     /** The parser's position and the first expected tokens; its full list can name hundreds of built-ins. */
@@ -184,13 +192,13 @@ final class Syntax {
             parsed = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(document.toString(),
                     "urn:armor:axiom", new org.semanticweb.owlapi.formats.FunctionalSyntaxDocumentFormat(), null));
         } catch (OWLOntologyCreationException e) {
-            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse functional-syntax axiom '" + text + "': "
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse functional-syntax axiom '" + abbreviated(text) + "': "
                     + functionalError(e, linesBefore, text), e);
         }
         List<OWLAxiom> axioms = parsed.axioms().filter(a -> !a.isOfType(org.semanticweb.owlapi.model.AxiomType.DECLARATION))
                 .toList();
         if (axioms.size() != 1) {
-            throw new ArmorException(ExitCode.BAD_SYNTAX, "expected exactly one axiom in '" + text + "', found "
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "expected exactly one axiom in '" + abbreviated(text) + "', found "
                     + axioms.size());
         }
         return axioms.get(0);
