@@ -27,17 +27,22 @@ public final class Rendering {
 
     /** {@code "lexical"^^xsd:type}, or {@code "text"@lang} for a language-tagged string. */
     public static String literal(OWLLiteral literal) {
-        String quoted = "\"" + literal.getLiteral() + "\"";
-        if (literal.hasLang()) {
-            return quoted + "@" + literal.getLang();
+        return literal(literal.getLiteral(), literal.hasLang() ? literal.getLang() : "",
+                literal.getDatatype().getIRI().toString());
+    }
+
+    /** The same form from its parts, for literals that do not come from the OWL API (SPARQL rows). */
+    public static String literal(String lexical, String language, String datatypeIri) {
+        String quoted = "\"" + lexical + "\"";
+        if (!language.isEmpty()) {
+            return quoted + "@" + language;
         }
-        IRI datatype = literal.getDatatype().getIRI();
         for (Namespaces known : List.of(Namespaces.XSD, Namespaces.RDF, Namespaces.RDFS, Namespaces.OWL)) {
-            if (datatype.getNamespace().equals(known.getPrefixIRI())) {
-                return quoted + "^^" + known.getPrefixName() + ":" + datatype.getRemainder().orElse("");
+            if (datatypeIri.startsWith(known.getPrefixIRI())) {
+                return quoted + "^^" + known.getPrefixName() + ":" + datatypeIri.substring(known.getPrefixIRI().length());
             }
         }
-        return quoted + "^^<" + datatype + ">";
+        return quoted + "^^<" + datatypeIri + ">";
     }
 
     /** Entities rendered, owl:Thing and owl:Nothing left out, sorted, without repeats. */

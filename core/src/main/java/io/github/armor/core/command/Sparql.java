@@ -27,7 +27,6 @@ import org.semanticweb.owlapi.formats.NTriplesDocumentFormat;
 import org.semanticweb.owlapi.model.IRI;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyStorageException;
-import org.semanticweb.owlapi.vocab.Namespaces;
 
 /**
  * QUERY SPARQL with Apache Jena ARQ over the ontology plus its inferences (class and property
@@ -157,15 +156,7 @@ final class Sparql {
         }
         if (node.isLiteral()) {
             Literal literal = node.asLiteral();
-            String quoted = "\"" + literal.getLexicalForm() + "\"";
-            if (!literal.getLanguage().isEmpty()) {
-                return quoted + "@" + literal.getLanguage();
-            }
-            String datatype = literal.getDatatypeURI();
-            if (datatype.startsWith(Namespaces.XSD.toString())) {
-                return quoted + "^^xsd:" + datatype.substring(Namespaces.XSD.toString().length());
-            }
-            return quoted + "^^<" + datatype + ">";
+            return Rendering.literal(literal.getLexicalForm(), literal.getLanguage(), literal.getDatatypeURI());
         }
         return "_:" + node.asResource().getId();
     }
