@@ -134,11 +134,14 @@ class CoreProcess:
                   timeout_s: Optional[float]) -> dict:
         with self._state:
             request_id = next(self._ids)
+        # Encoded outside the send lock: a large request never holds up the others.
+        frame = wire.encode_frame({'id': request_id, **payload})
+        with self._state:
             future: concurrent.futures.Future = concurrent.futures.Future()
             self._pending[request_id] = future
         try:
             with self._send_lock:
-                wire.send_frame(connection, {'id': request_id, **payload})
+                connection.sendall(frame)
         except OSError as error:
             self._core_lost(generation, f'sending to the core failed: {error}')
         try:

@@ -27,14 +27,16 @@ from rcl_interfaces.msg import ParameterDescriptor
 SERVICE_QOS = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=1000,
                          reliability=ReliabilityPolicy.RELIABLE)
 
-# Exit code the core reserves for "time limit reached" (ExitCode.java).
+# Exit codes the core reserves (ExitCode.java): "time limit reached", "too large".
 TIMEOUT = 211
+TOO_LARGE = 221
 
 # Settings handed to the core at start; the names are the core's configuration keys.
 _CORE_SETTINGS = ('full_entity_iri', 'default_reasoner', 'allowed_dirs', 'web_loading',
                   'lock_wait_ms', 'reasoner_timeout_ms', 'mount_lease_s', 'state_dir',
                   'restore_state', 'journal_fsync', 'checkpoint_every_changes',
-                  'checkpoint_every_s')
+                  'checkpoint_every_s', 'sparql_timeout_ms', 'sparql_federated',
+                  'ignore_missing_imports')
 
 
 class ArmorService(Node):
@@ -76,6 +78,8 @@ class ArmorService(Node):
             response.armor_response = wire.response_from_json(reply['response'])
         except CoreUnavailable as error:
             response.armor_response = wire.error_response(CORE_UNAVAILABLE, str(error))
+        except wire.FrameTooLarge as error:
+            response.armor_response = wire.error_response(TOO_LARGE, str(error))
         except concurrent.futures.TimeoutError:
             response.armor_response = self._timed_out()
         return response
@@ -92,6 +96,10 @@ class ArmorService(Node):
         except CoreUnavailable as error:
             response.success = False
             response.armor_responses = [wire.error_response(CORE_UNAVAILABLE, str(error))
+                                        for _ in directives]
+        except wire.FrameTooLarge as error:
+            response.success = False
+            response.armor_responses = [wire.error_response(TOO_LARGE, str(error))
                                         for _ in directives]
         except concurrent.futures.TimeoutError:
             response.success = False
@@ -168,6 +176,12 @@ class ArmorService(Node):
                               '(survives power loss, not only a crash)'),
             'checkpoint_every_changes': (1000, 'checkpoint a reference after this many records'),
             'checkpoint_every_s': (60, '... or when it changed and its checkpoint is this old'),
+            'sparql_timeout_ms': (30000, 'default time limit of a SPARQL query, and the most one '
+                                  'may ask for (0 = none)'),
+            'sparql_federated': (False, 'let SPARQL SERVICE clauses query other endpoints '
+                                 '(opens network connections)'),
+            'ignore_missing_imports': (False, 'load an ontology whose owl:imports cannot be resolved, '
+                                       'listing them in error_description (default: refuse, 222)'),
             'core_start_timeout_s': (600.0, 'longest wait for the core to start and restore'),
             'request_timeout_s': (0.0, 'longest wait for the core per request (0 = none)'),
             'core_jar': ('', 'path of armor-core.jar (default: $ARMOR_CORE_JAR)'),

@@ -13,15 +13,28 @@ import struct
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes, QueryItem
 
 _HEADER = struct.Struct('>I')
+# The largest frame either side reads; the core's own size limits (SizeLimits.java) are far
+# below it, so only a request far beyond them meets this one.
 MAX_FRAME_BYTES = 256 << 20
 
 _REQUEST_FIELDS = ('client_name', 'reference_name', 'command', 'primary_command_spec',
                    'secondary_command_spec')
 
 
-def send_frame(sock: socket.socket, payload: dict) -> None:
+class FrameTooLarge(ValueError):
+    """A request whose frame the core would not read: refused before it is sent."""
+
+
+def encode_frame(payload: dict) -> bytes:
     data = json.dumps(payload, ensure_ascii=False).encode('utf-8')
-    sock.sendall(_HEADER.pack(len(data)) + data)
+    if len(data) > MAX_FRAME_BYTES:
+        raise FrameTooLarge(f'the request is {len(data):,} bytes as a frame to the core; the '
+                            f'limit is {MAX_FRAME_BYTES:,} (docs/commands.md#size-limits)')
+    return _HEADER.pack(len(data)) + data
+
+
+def send_frame(sock: socket.socket, payload: dict) -> None:
+    sock.sendall(encode_frame(payload))
 
 
 def receive_frame(sock: socket.socket) -> dict:

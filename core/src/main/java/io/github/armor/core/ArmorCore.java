@@ -6,6 +6,7 @@ import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
+import io.github.armor.core.api.SizeLimits;
 import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.command.CommandSpec;
 import io.github.armor.core.command.CommandTable;
@@ -114,6 +115,11 @@ public final class ArmorCore implements AutoCloseable {
     }
 
     public Response execute(Directive directive) {
+        try {
+            SizeLimits.check(directive);
+        } catch (ArmorException e) {
+            return Response.failure(e, consistencyOf(directive));
+        }
         return run(directive, null);
     }
 
@@ -122,6 +128,12 @@ public final class ArmorCore implements AutoCloseable {
      * the later ones are not run; both answer {@link ExitCode#ROLLED_BACK}.
      */
     public ListResponse executeList(List<Directive> directives) {
+        try {
+            SizeLimits.checkList(directives);
+        } catch (ArmorException e) {
+            return new ListResponse(false, false, directives.stream()
+                    .map(d -> Response.failure(e, consistencyOf(d))).toList());
+        }
         ListState list = new ListState();
         try {
             return runList(directives, list);
@@ -215,27 +227,32 @@ public final class ArmorCore implements AutoCloseable {
         return switch (spec.target()) {
             case NONE -> spec.handler().run(context(directive, null));
             case NEW -> create(spec, directive, list);
-            case EXISTING -> holdFor(list, references.get(directive.referenceName())).locked(config.lockWaitMs(),
-                    reference -> {
-                releaseExpiredMount(reference);
-                if (spec.mountChecked()) {
-                    checkMount(reference, directive);
-                    if (list != null) {
-                        list.enrol(reference);
+            case EXISTING -> {
+                Reference target = references.get(directive.referenceName());
+                CommandContext context = context(directive, target);
+                Response underLock = holdFor(list, target).locked(config.lockWaitMs(), reference -> {
+                    releaseExpiredMount(reference);
+                    if (spec.mountChecked()) {
+                        checkMount(reference, directive);
+                        if (list != null) {
+                            list.enrol(reference);
+                        }
                     }
-                }
-                Response response = runUndoable(spec, directive, reference, list);
-                if (list != null && spec.mountChecked()) {
-                    list.changedBy.add(list.position);
-                }
-                if (list != null && journaled(spec)) {
-                    list.toJournal.computeIfAbsent(reference, r -> new ArrayList<>()).add(directive);
-                }
-                if (state != null && !replaying.get() && spec.key().equals("DROP - -")) {
-                    state.dropped(reference);
-                }
-                return response;
-            });
+                    Response response = runUndoable(spec, context, reference, list);
+                    if (list != null && spec.mountChecked()) {
+                        list.changedBy.add(list.position);
+                    }
+                    if (list != null && journaled(spec)) {
+                        list.toJournal.computeIfAbsent(reference, r -> new ArrayList<>()).add(directive);
+                    }
+                    if (state != null && !replaying.get() && spec.key().equals("DROP - -")) {
+                        state.dropped(reference);
+                    }
+                    return response;
+                });
+                // A read that left work for after the release (SPARQL on its private copy) does it now.
+                yield context.finishAfterRelease(underLock);
+            }
         };
     }
 
@@ -243,13 +260,14 @@ public final class ArmorCore implements AutoCloseable {
      * Runs a directive so that a failure changes nothing: a change that throws half-way is undone,
      * and outside a list an acknowledged change is journaled first (undone if that fails).
      */
-    private Response runUndoable(CommandSpec spec, Directive directive, Reference reference, ListState list) {
+    private Response runUndoable(CommandSpec spec, CommandContext context, Reference reference, ListState list) {
+        Directive directive = context.directive();
         boolean single = list == null && spec.mountChecked();
         if (single) {
             reference.beginTransaction();
         }
         try {
-            Response response = spec.handler().run(context(directive, reference));
+            Response response = spec.handler().run(context);
             if (list == null && journaled(spec)) {
                 state.record(reference, List.of(directive));
                 state.checkpointIfDue(reference);

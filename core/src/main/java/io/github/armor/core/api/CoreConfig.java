@@ -16,6 +16,7 @@ import java.util.List;
  * @param reasonerTimeoutMs time limit handed to the reasoners (0 = none)
  * @param mountLeaseS      a mount whose holder sent nothing for this long is released (0 = never)
  * @param durability       where and how acknowledged changes are kept across restarts
+ * @param safeguards       what a directive may reach and spend beyond its reference
  */
 public record CoreConfig(
         boolean fullEntityIri,
@@ -25,7 +26,8 @@ public record CoreConfig(
         long lockWaitMs,
         long reasonerTimeoutMs,
         long mountLeaseS,
-        Durability durability) {
+        Durability durability,
+        Safeguards safeguards) {
 
     /**
      * Journal and checkpoint settings.
@@ -41,8 +43,27 @@ public record CoreConfig(
         public static final Durability NONE = new Durability(null, false, false, 1000, 60);
     }
 
+    /**
+     * Limits on what a directive may reach (imports, SPARQL endpoints) and spend (SPARQL time).
+     *
+     * @param sparqlTimeoutMs      default time limit of a SPARQL query, and the most a query may ask for (0 = none)
+     * @param sparqlFederated      let SPARQL SERVICE clauses query remote endpoints (opens network connections)
+     * @param ignoreMissingImports load an ontology whose imports cannot be resolved, listing them in the answer
+     */
+    public record Safeguards(long sparqlTimeoutMs, boolean sparqlFederated, boolean ignoreMissingImports) {
+        public static final Safeguards DEFAULT = new Safeguards(30_000, false, false);
+    }
+
+    /** Settings with the default safeguards. */
+    public CoreConfig(boolean fullEntityIri, String defaultReasoner, List<Path> allowedDirs, boolean webLoading,
+                      long lockWaitMs, long reasonerTimeoutMs, long mountLeaseS, Durability durability) {
+        this(fullEntityIri, defaultReasoner, allowedDirs, webLoading, lockWaitMs, reasonerTimeoutMs, mountLeaseS,
+                durability, Safeguards.DEFAULT);
+    }
+
     public CoreConfig {
         allowedDirs = List.copyOf(allowedDirs);
+        safeguards = safeguards == null ? Safeguards.DEFAULT : safeguards;
         defaultReasoner = defaultReasoner == null || defaultReasoner.isBlank() ? "HERMIT" : defaultReasoner;
     }
 

@@ -27,7 +27,10 @@ public enum ExitCode {
     INCONSISTENT(217, "the ontology is inconsistent, the query has no meaningful answer"),
     WEB_LOADING_DISABLED(218, "loading from the web is disabled"),
     NOT_SUPPORTED(219, "not supported by this reasoner"),
-    INTERNAL_ERROR(220, "internal error in the knowledge core");
+    INTERNAL_ERROR(220, "internal error in the knowledge core"),
+    TOO_LARGE(221, "an argument, directive, list or answer exceeds its size limit"),
+    IMPORTS_UNRESOLVED(222, "owl:imports that could not be resolved"),
+    FEDERATED_QUERY_DISABLED(223, "SPARQL SERVICE (federated query) is disabled");
 
     private final int code;
     private final String meaning;

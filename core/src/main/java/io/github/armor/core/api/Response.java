@@ -29,6 +29,12 @@ public record Response(
                 List.of(), List.of());
     }
 
+    /** The same answer with a description; on a success it says what the client should know (warnings). */
+    public Response withDescription(String description) {
+        return new Response(success, timeout, exitCode, description, isConsistent, queriedObjects,
+                sparqlQueriedObjects);
+    }
+
     public Response withQueriedObjects(List<String> objects, boolean timedOut) {
         return new Response(success, timedOut, exitCode, errorDescription, isConsistent, List.copyOf(objects),
                 sparqlQueriedObjects);

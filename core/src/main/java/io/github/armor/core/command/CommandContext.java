@@ -9,6 +9,7 @@ import io.github.armor.core.api.Response;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
 import java.util.List;
+import java.util.function.Supplier;
 import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLDataFactory;
@@ -26,6 +27,7 @@ public final class CommandContext {
     private final CoreConfig config;
     private final Rendering rendering;
     private final DirectiveLog log;
+    private Supplier<Response> afterRelease;
 
     public CommandContext(Directive directive, Reference reference, ReferenceRegistry references,
                           CoreConfig config, Rendering rendering, DirectiveLog log) {
@@ -35,6 +37,23 @@ public final class CommandContext {
         this.config = config;
         this.rendering = rendering;
         this.log = log;
+    }
+
+    /**
+     * For a read whose expensive part works on a private copy (SPARQL): {@code evaluation} runs
+     * once the reference is released, so writers and other readers are not held out meanwhile.
+     * Inside an atomic list, which holds its references to the end, it runs at once.
+     */
+    public Response afterRelease(Supplier<Response> evaluation) {
+        afterRelease = evaluation;
+        return Response.ok(true, List.of());
+    }
+
+    /** The directive's answer: the deferred evaluation's, if the handler left one. */
+    public Response finishAfterRelease(Response underLock) {
+        Supplier<Response> evaluation = afterRelease;
+        afterRelease = null;
+        return evaluation == null ? underLock : evaluation.get();
     }
 
     public DirectiveLog log() {

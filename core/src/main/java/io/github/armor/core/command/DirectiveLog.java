@@ -7,66 +7,174 @@ import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
 import java.io.IOException;
 import java.io.PrintStream;
-import java.io.Writer;
+import java.nio.ByteBuffer;
+import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.time.Instant;
+import java.util.Objects;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.stream.Collectors;
 
-/** LOG SCREEN / LOG FILE: a line per directive and its outcome, to stderr and/or a file. */
+/**
+ * LOG SCREEN / LOG FILE: a line per directive and its outcome, to stderr and/or a file.
+ *
+ * <p>A directive only formats its line and queues it; one writer thread does all the writing.
+ * A slow disk or a full pipe therefore delays log lines, never a directive: no lock a directive
+ * takes is ever held across I/O. When the queue is full, lines are dropped and counted.
+ */
 public final class DirectiveLog {
+    private static final int QUEUE_LINES = 10_000;
+    private static final int SHOWN_ARGUMENT_CHARS = 200;
+
+    /** A line and where it goes, as decided when its directive ended. */
+    private record Line(String text, boolean toScreen, FileChannel toFile) {}
+
     private final PrintStream screen;
-    private boolean screenOn;
-    private Writer file;
+    private volatile boolean screenOn;
+    private final AtomicReference<FileChannel> file = new AtomicReference<>();
+    private final BlockingQueue<Line> queue = new ArrayBlockingQueue<>(QUEUE_LINES);
+    private final AtomicLong dropped = new AtomicLong();
+    private Thread writer;
 
     public DirectiveLog(PrintStream screen) {
         this.screen = screen;
     }
 
-    public synchronized void record(Directive directive, Response response) {
-        if (!screenOn && file == null) {
-            return;
-        }
-        String line = Instant.now() + " [" + directive.clientName() + "] " + directive.referenceName() + ": "
-                + directive.describe() + " " + directive.args() + " -> " + response.exitCode()
-                + (response.success() ? "" : " " + response.errorDescription());
-        if (screenOn) {
-            screen.println(line);
-        }
-        if (file != null) {
-            try {
-                file.write(line + System.lineSeparator());
-                file.flush();
-            } catch (IOException e) {
-                screen.println("directive log file failed, closing it: " + e);
-                closeFile();
-            }
+    /** The writer thread, started when logging is first turned on. */
+    private synchronized void startWriter() {
+        if (writer == null) {
+            writer = new Thread(this::writeLines, "armor-directive-log");
+            writer.setDaemon(true);
+            writer.start();
         }
     }
 
-    public synchronized void screen(boolean on) {
+    public void record(Directive directive, Response response) {
+        boolean toScreen = screenOn;
+        FileChannel toFile = file.get();
+        if (!toScreen && toFile == null) {
+            return;
+        }
+        String line = Instant.now() + " [" + shown(directive.clientName()) + "] " + shown(directive.referenceName())
+                + ": " + shown(directive.describe()) + " "
+                + directive.args().stream().map(DirectiveLog::shown).collect(Collectors.joining(", ", "[", "]"))
+                + " -> " + response.exitCode() + (response.success() ? "" : " " + shown(response.errorDescription()));
+        if (!queue.offer(new Line(line, toScreen, toFile))) {
+            dropped.incrementAndGet();
+        }
+    }
+
+    public void screen(boolean on) {
+        if (on) {
+            startWriter();
+        }
         screenOn = on;
     }
 
-    public synchronized void file(Path path) {
-        closeFile();
+    /**
+     * Starts writing to {@code target}, a path already confined to the allowed directories with
+     * its symbolic links resolved: it must be a regular file (created if missing).
+     */
+    public void file(Path target) {
+        refuseIfNotRegular(target);
+        FileChannel channel;
         try {
-            file = Files.newBufferedWriter(path, StandardCharsets.UTF_8, StandardOpenOption.CREATE,
-                    StandardOpenOption.APPEND);
+            // Read-write: opening a FIFO (swapped in after the check) this way never waits for a
+            // reader, as a write-only open would. No link is followed at the last step either.
+            channel = FileChannel.open(target, StandardOpenOption.CREATE, StandardOpenOption.READ,
+                    StandardOpenOption.WRITE, LinkOption.NOFOLLOW_LINKS);
+        } catch (IOException | UnsupportedOperationException e) {
+            throw new ArmorException(ExitCode.LOAD_FAILED, "cannot open log file '" + target + "': " + e, e);
+        }
+        try {
+            refuseIfNotRegular(target);
+            channel.position(channel.size());
+        } catch (IOException | ArmorException e) {
+            close(channel);
+            throw e instanceof ArmorException armor ? armor
+                    : new ArmorException(ExitCode.LOAD_FAILED, "cannot use log file '" + target + "': " + e, e);
+        }
+        startWriter();
+        close(file.getAndSet(channel));
+    }
+
+    public void closeFile() {
+        close(file.getAndSet(null));
+    }
+
+    private static void refuseIfNotRegular(Path target) {
+        try {
+            BasicFileAttributes attributes = Files.readAttributes(target, BasicFileAttributes.class,
+                    LinkOption.NOFOLLOW_LINKS);
+            if (!attributes.isRegularFile()) {
+                throw new ArmorException(ExitCode.LOAD_FAILED, "'" + target + "' is not a regular file (a "
+                        + (attributes.isDirectory() ? "directory" : attributes.isSymbolicLink() ? "symbolic link"
+                        : "FIFO, socket or device") + "); LOG FILE writes only to regular files");
+            }
+        } catch (NoSuchFileException e) {
+            // created on open
         } catch (IOException e) {
-            throw new ArmorException(ExitCode.LOAD_FAILED, "cannot open log file '" + path + "': " + e.getMessage(), e);
+            throw new ArmorException(ExitCode.LOAD_FAILED, "cannot use log file '" + target + "': " + e, e);
         }
     }
 
-    public synchronized void closeFile() {
-        if (file != null) {
+    private void writeLines() {
+        while (true) {
+            Line line;
             try {
-                file.close();
-            } catch (IOException e) {
-                screen.println("closing the directive log file failed: " + e);
+                line = queue.take();
+            } catch (InterruptedException e) {
+                return;
             }
-            file = null;
+            long lost = dropped.getAndSet(0);
+            String text = (lost > 0 ? Instant.now() + " " + lost + " directive log line(s) dropped: the log could"
+                    + " not keep up" + System.lineSeparator() : "") + line.text();
+            if (line.toScreen()) {
+                screen.println(text);
+            }
+            if (line.toFile() != null) {
+                write(line.toFile(), text + System.lineSeparator());
+            }
         }
+    }
+
+    private void write(FileChannel channel, String text) {
+        try {
+            ByteBuffer bytes = ByteBuffer.wrap(text.getBytes(StandardCharsets.UTF_8));
+            while (bytes.hasRemaining()) {
+                channel.write(bytes);
+            }
+        } catch (IOException e) {
+            if (channel.isOpen() && file.compareAndSet(channel, null)) {
+                screen.println("directive log file failed, closing it: " + e);
+                close(channel);
+            }
+        }
+    }
+
+    private void close(FileChannel channel) {
+        if (channel == null) {
+            return;
+        }
+        try {
+            channel.close();
+        } catch (IOException e) {
+            screen.println("closing the directive log file failed: " + e);
+        }
+    }
+
+    private static String shown(String text) {
+        String value = Objects.toString(text, "");
+        return value.length() <= SHOWN_ARGUMENT_CHARS ? value
+                : value.substring(0, SHOWN_ARGUMENT_CHARS) + "... (" + value.length() + " characters)";
     }
 }

@@ -10,7 +10,6 @@ import io.github.armor.core.reference.Reference;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.function.Function;
-import org.semanticweb.owlapi.model.OWLOntology;
 
 /** Contract 5.1: creating, saving and dropping references, mounting, and the utilities. */
 final class ReferenceCommands {
@@ -28,7 +27,8 @@ final class ReferenceCommands {
         }
         table.command("CREATE")
                 .args("ontology IRI", "buffered manipulation", "reasoner", "buffered reasoner")
-                .creating(c -> load(c, -1, false, null, ignored -> files(c).create(c.arg(0))));
+                .creating(c -> load(c, -1, false, null,
+                        ignored -> new OntologyFiles.Loaded(files(c).create(c.arg(0)), "")));
         table.command("SAVE").optional("path", "format").onReference(c -> save(c, false));
         table.command("SAVE INFERENCE").optional("path", "format").onReference(c -> save(c, true));
         table.command("DROP").onReference(c -> {
@@ -77,7 +77,7 @@ final class ReferenceCommands {
      * reasoner, buffered reasoner; {@code first} is the index before them (-1 for CREATE).
      */
     private static Response load(CommandContext c, int first, boolean mount, String source,
-                                 Function<String, OWLOntology> reader) {
+                                 Function<String, OntologyFiles.Loaded> reader) {
         String iriArgument = c.arg(first + 1).trim();
         boolean bufferedManipulation = c.flag(first + 2);
         String reasoner = ReasonerRegistry.canonicalName(c.arg(first + 3), c.config().defaultReasoner());
@@ -86,12 +86,16 @@ final class ReferenceCommands {
         String client = c.directive().clientName();
         Reference.Settings settings = new Reference.Settings(source, iriArgument, reasoner, bufferedManipulation,
                 bufferedReasoner);
-        Reference reference = c.references().createOrReuse(name, source, () ->
-                Reference.open(name, reader.apply(source), settings, c.config().reasonerTimeoutMs()));
+        StringBuilder warnings = new StringBuilder();
+        Reference reference = c.references().createOrReuse(name, source, () -> {
+            OntologyFiles.Loaded loaded = reader.apply(source);
+            warnings.append(loaded.warnings());
+            return Reference.open(name, loaded.ontology(), settings, c.config().reasonerTimeoutMs());
+        });
         if (mount) {
             takeMount(reference, client);
         }
-        return Response.ok(reference.isConsistent(), List.of());
+        return Response.ok(reference.isConsistent(), List.of()).withDescription(warnings.toString());
     }
 
     private static Response save(CommandContext c, boolean withInferences) {

@@ -2,9 +2,11 @@
 package io.github.armor.core.command;
 
 import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.api.Response.QueryItem;
+import io.github.armor.core.api.SizeLimits;
 import io.github.armor.core.reference.Reference;
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
@@ -23,6 +25,7 @@ import org.apache.jena.rdf.model.Model;
 import org.apache.jena.rdf.model.ModelFactory;
 import org.apache.jena.rdf.model.RDFNode;
 import org.apache.jena.shared.PrefixMapping;
+import org.apache.jena.sparql.engine.http.Service;
 import org.semanticweb.owlapi.formats.NTriplesDocumentFormat;
 import org.semanticweb.owlapi.model.IRI;
 import org.semanticweb.owlapi.model.OWLOntology;
@@ -32,16 +35,20 @@ import org.semanticweb.owlapi.model.OWLOntologyStorageException;
  * QUERY SPARQL with Apache Jena ARQ over the ontology plus its inferences (class and property
  * assertions, hierarchy), so that answers agree with the other queries. The reference's
  * declared prefixes are predefined in every query.
+ *
+ * <p>Two phases: under the reference's lock, the query is parsed and checked and the graph is
+ * built (the reasoner's part); the graph is a private copy, so the query is evaluated after the
+ * lock is released, within the time limit (node parameter sparql_timeout_ms).
  */
 final class Sparql {
     private Sparql() {}
 
     static Response answer(CommandContext c, boolean formatted) {
         List<String> args = c.args();
-        long timeoutMs = 0;
+        long requestedMs = 0;
         List<String> parts = args;
         if (args.size() == 2 || args.size() == 4) {
-            timeoutMs = timeout(args.get(args.size() - 1));
+            requestedMs = timeout(args.get(args.size() - 1));
             parts = args.subList(0, args.size() - 1);
         } else if (args.size() != 1 && args.size() != 3) {
             throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "QUERY SPARQL takes (query[, timeout ms]) or "
@@ -52,13 +59,42 @@ final class Sparql {
         if (!query.isSelectType() && !query.isAskType()) {
             throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "only SELECT and ASK queries are answered");
         }
+        CoreConfig.Safeguards safeguards = c.config().safeguards();
+        if (!safeguards.sparqlFederated() && FederatedQueries.uses(query)) {
+            throw new ArmorException(ExitCode.FEDERATED_QUERY_DISABLED, "the query has a SERVICE clause (a federated"
+                    + " query, which would connect to another endpoint); start the node with sparql_federated:=true"
+                    + " to allow it");
+        }
+        long limitMs = timeLimit(requestedMs, safeguards.sparqlTimeoutMs());
+        // The reasoner's part needs the reference; the graph it yields is a private copy.
         Model model = model(c.reference());
+        boolean consistent = c.reference().isConsistent();
         Rendering rendering = c.render();
+        boolean federated = safeguards.sparqlFederated();
+        return c.afterRelease(() -> evaluate(query, model, limitMs, federated, rendering, consistent, formatted));
+    }
+
+    /**
+     * The query's own limit when it asks for one within the node's (sparql_timeout_ms, which is
+     * also the default); 0 = none.
+     */
+    private static long timeLimit(long requestedMs, long nodeMs) {
+        if (requestedMs > 0 && (nodeMs <= 0 || requestedMs < nodeMs)) {
+            return requestedMs;
+        }
+        return nodeMs;
+    }
+
+    private static Response evaluate(Query query, Model model, long limitMs, boolean federated, Rendering rendering,
+                                     boolean consistent, boolean formatted) {
         List<List<QueryItem>> rows = new ArrayList<>();
         boolean timedOut = false;
+        long answerBytes = 0;
         try (QueryExecution execution = QueryExecutionFactory.create(query, model)) {
-            if (timeoutMs > 0) {
-                execution.setTimeout(timeoutMs);
+            // Behind the check above: a SERVICE the check missed fails before connecting.
+            execution.getContext().set(Service.serviceAllowed, federated);
+            if (limitMs > 0) {
+                execution.setTimeout(limitMs);
             }
             if (query.isAskType()) {
                 rows.add(List.of(new QueryItem("ASK", String.valueOf(execution.execAsk()))));
@@ -70,7 +106,13 @@ final class Sparql {
                     List<QueryItem> row = new ArrayList<>();
                     for (String variable : variables) {
                         RDFNode node = solution.get(variable);
-                        row.add(new QueryItem(variable, node == null ? "" : render(rendering, node)));
+                        String value = node == null ? "" : render(rendering, node);
+                        answerBytes += variable.length() + SizeLimits.utf8Bytes(value);
+                        row.add(new QueryItem(variable, value));
+                    }
+                    if (answerBytes > SizeLimits.ANSWER_BYTES) {
+                        throw SizeLimits.tooLarge("the answer exceeds " + SizeLimits.size(SizeLimits.ANSWER_BYTES)
+                                + " after " + rows.size() + " rows; narrow the query or add a LIMIT");
                     }
                     rows.add(row);
                 }
@@ -78,7 +120,6 @@ final class Sparql {
         } catch (QueryCancelledException e) {
             timedOut = true;
         }
-        boolean consistent = c.reference().isConsistent();
         if (formatted) {
             List<QueryItem> items = new ArrayList<>();
             for (List<QueryItem> row : rows) {

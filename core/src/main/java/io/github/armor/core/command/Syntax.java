@@ -3,6 +3,7 @@ package io.github.armor.core.command;
 
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.Reference;
 import java.util.List;
 import java.util.Set;
@@ -187,13 +188,17 @@ final class Syntax {
         document.append(text).append("\n)\n");
         OWLOntology parsed;
         try {
-            OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
+            OWLOntologyManager manager = OntologyFiles.inlineManager();
             manager.setOntologyParsers(Set.of(new OWLFunctionalSyntaxOWLParserFactory()));
             parsed = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(document.toString(),
                     "urn:armor:axiom", new org.semanticweb.owlapi.formats.FunctionalSyntaxDocumentFormat(), null));
         } catch (OWLOntologyCreationException e) {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse functional-syntax axiom '" + abbreviated(text) + "': "
                     + functionalError(e, linesBefore, text), e);
+        }
+        if (parsed.importsDeclarations().findAny().isPresent()) {
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "'" + abbreviated(text) + "' holds an Import, which is not an"
+                    + " axiom; LOAD the ontology that imports it instead");
         }
         List<OWLAxiom> axioms = parsed.axioms().filter(a -> !a.isOfType(org.semanticweb.owlapi.model.AxiomType.DECLARATION))
                 .toList();

@@ -37,8 +37,16 @@ final class Journal implements Closeable {
         return new Journal(channel, fsync);
     }
 
-    /** Writes one record; with fsync on, it is on the disk when this returns. */
+    /**
+     * Writes one record; with fsync on, it is on the disk when this returns. A record larger
+     * than recovery reads back is refused, so its change is undone rather than acknowledged
+     * and lost at the next restart.
+     */
     void append(byte[] payload) throws IOException {
+        if (payload.length > MAX_RECORD_BYTES) {
+            throw new IOException("a record of " + payload.length + " bytes exceeds the journal's limit of "
+                    + MAX_RECORD_BYTES + " bytes");
+        }
         CRC32C crc = new CRC32C();
         crc.update(payload);
         ByteBuffer frame = ByteBuffer.allocate(HEADER_BYTES + payload.length)

@@ -12,6 +12,7 @@ import java.nio.file.StandardCopyOption;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.function.Supplier;
 import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.formats.FunctionalSyntaxDocumentFormat;
@@ -30,14 +31,16 @@ import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyCreationException;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.OWLOntologyStorageException;
-import org.semanticweb.owlapi.util.AutoIRIMapper;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * Reading and writing ontology documents, with the security rules: client paths stay inside the
- * configured directories, and nothing is fetched from the web unless web loading is on (also
- * owl:imports, which are resolved from the document's own directory instead).
+ * configured directories, owl:imports resolve only to documents inside them too (or the web,
+ * when web loading is on), and no parser fetches an external entity.
  */
 public final class OntologyFiles {
+    private static final Logger LOG = LoggerFactory.getLogger(OntologyFiles.class);
     private static final Map<String, Supplier<OWLDocumentFormat>> FORMATS = Map.of(
             "RDFXML", RDFXMLDocumentFormat::new,
             "OWLXML", OWLXMLDocumentFormat::new,
@@ -46,91 +49,108 @@ public final class OntologyFiles {
             "MANCHESTER", ManchesterSyntaxDocumentFormat::new);
 
     // These parsers accept almost any text as an (empty) ontology, which would turn a corrupt
-    // file into a silent success; robotics ontologies never use their formats.
-    private static final List<String> LENIENT_PARSERS = List.of("OBO", "KRSS", "DL Syntax", "LaTeX");
+    // file into a silent success; robotics ontologies never use their formats. HDT, BinaryRDF
+    // and RDFa are binary or HTML formats: their complaints about a text file only confuse.
+    private static final List<String> UNUSED_PARSERS = List.of("OBO", "KRSS", "DL Syntax", "LaTeX", "HDT",
+            "BinaryRDF", "RDFa");
+
+    /** A loaded document, and what the LOAD's answer must say about it (unresolved imports). */
+    public record Loaded(OWLOntology ontology, String warnings) {}
 
     private final CoreConfig config;
+    private final AllowedPaths allowed;
 
     public OntologyFiles(CoreConfig config) {
         this.config = config;
+        this.allowed = new AllowedPaths(config.allowedDirs());
     }
 
-    /** A fresh manager configured so that loading never reaches the network on its own. */
-    public OWLOntologyManager newManager(Path documentDirectory) {
+    /**
+     * A fresh manager whose imports go through {@code imports} only, so that loading never
+     * reaches a file or the network on its own.
+     */
+    private OWLOntologyManager newManager(ImportResolver imports) {
         OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
         manager.setOntologyParsers(java.util.stream.StreamSupport.stream(manager.getOntologyParsers().spliterator(), false)
-                .filter(p -> LENIENT_PARSERS.stream().noneMatch(p.getSupportedFormat().getKey()::contains))
+                .filter(p -> UNUSED_PARSERS.stream().noneMatch(p.getSupportedFormat().getKey()::contains))
                 .collect(java.util.stream.Collectors.toSet()));
         manager.setOntologyLoaderConfiguration(manager.getOntologyLoaderConfiguration()
                 .setMissingImportHandlingStrategy(MissingImportHandlingStrategy.SILENT)
-                .setFollowRedirects(config.webLoading()));
-        if (!config.webLoading()) {
-            // Consulted last: any import the directory does not provide is sent nowhere.
-            manager.getIRIMappers().add(iri -> iri.getScheme() != null && iri.getScheme().startsWith("http")
-                    ? IRI.create("file:/nonexistent/armor-web-loading-disabled") : null);
-        }
-        if (documentDirectory != null) {
-            manager.getIRIMappers().add(new AutoIRIMapper(documentDirectory.toFile(), false));
-        }
+                // WebRedirects follows them, refusing any that leaves http(s).
+                .setFollowRedirects(false));
+        manager.getIRIMappers().clear();
+        manager.getIRIMappers().add(imports);
+        manager.addMissingImportListener(imports);
         return manager;
     }
 
-    /** A client path, made absolute and checked against the allowed directories. */
-    public Path allowedPath(String clientPath) {
-        if (clientPath == null || clientPath.isBlank()) {
-            throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "empty path");
-        }
-        Path path;
-        try {
-            path = Path.of(clientPath.trim()).toAbsolutePath().normalize();
-            Path existing = path;
-            while (existing != null && !Files.exists(existing)) {
-                existing = existing.getParent();
-            }
-            Path real = existing == null ? path : existing.toRealPath().resolve(existing.relativize(path));
-            for (Path allowed : config.allowedDirs()) {
-                Path root = Files.exists(allowed) ? allowed.toRealPath() : allowed.toAbsolutePath().normalize();
-                if (real.startsWith(root)) {
-                    return real;
-                }
-            }
-        } catch (IOException | RuntimeException e) {
-            throw new ArmorException(ExitCode.PATH_NOT_ALLOWED, "path '" + clientPath + "' cannot be used: " + e);
-        }
-        throw new ArmorException(ExitCode.PATH_NOT_ALLOWED, "path '" + clientPath
-                + "' is outside the allowed directories " + config.allowedDirs()
-                + " (node parameter allowed_dirs)");
+    /** A manager for ontology text a client sends inline (ADD AXIOM): it resolves no import at all. */
+    public static OWLOntologyManager inlineManager() {
+        OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
+        ImportResolver none = new ImportResolver(new AllowedPaths(List.of()), false, null);
+        manager.setOntologyLoaderConfiguration(manager.getOntologyLoaderConfiguration()
+                .setMissingImportHandlingStrategy(MissingImportHandlingStrategy.SILENT).setFollowRedirects(false));
+        manager.getIRIMappers().clear();
+        manager.getIRIMappers().add(none);
+        manager.addMissingImportListener(none);
+        return manager;
     }
 
-    public OWLOntology loadFile(String clientPath) {
+    /** A client path, made absolute and checked against the allowed directories (symbolic links followed). */
+    public Path allowedPath(String clientPath) {
+        return allowed.check(clientPath);
+    }
+
+    public Loaded loadFile(String clientPath) {
         Path path = allowedPath(clientPath);
         if (!Files.isRegularFile(path)) {
-            throw new ArmorException(ExitCode.LOAD_FAILED, "no such file: '" + clientPath + "'");
+            throw new ArmorException(ExitCode.LOAD_FAILED, Files.exists(path)
+                    ? "'" + clientPath + "' is not a regular file" : "no such file: '" + clientPath + "'");
         }
-        return load(newManager(path.getParent()), new FileDocumentSource(path.toFile()), clientPath);
+        ImportResolver imports = new ImportResolver(allowed, config.webLoading(), path.getParent());
+        OWLOntology ontology = load(newManager(imports), new FileDocumentSource(path.toFile()), clientPath,
+                () -> OntologyHeaders.likelySyntax(path));
+        return new Loaded(ontology, imports.verdict(clientPath, config.safeguards().ignoreMissingImports()));
     }
 
-    /** A file the core wrote itself (a checkpoint): no path confinement, imports resolved from importsDir. */
+    /**
+     * A file the core wrote itself (a checkpoint): no path confinement for it, and its imports
+     * resolved beside importsDir under the usual rules; one that no longer resolves is left out
+     * with a warning rather than losing the reference.
+     */
     public OWLOntology loadTrusted(Path file, Path importsDir) {
-        OWLOntologyManager manager = newManager(importsDir);
-        return load(manager, new FileDocumentSource(file.toFile()), file.toString());
+        ImportResolver imports = new ImportResolver(allowed, config.webLoading(), importsDir);
+        OWLOntology ontology = load(newManager(imports), new FileDocumentSource(file.toFile()), file.toString(),
+                () -> OntologyHeaders.likelySyntax(file));
+        try {
+            String warnings = imports.verdict(file.toString(), true);
+            if (!warnings.isEmpty()) {
+                LOG.warn("{}: {}", file, warnings);
+            }
+        } catch (ArmorException e) {
+            LOG.warn("{}: {}", file, e.getMessage());
+        }
+        return ontology;
     }
 
-    public OWLOntology loadWeb(String url) {
+    public Loaded loadWeb(String url) {
         if (!config.webLoading()) {
             throw new ArmorException(ExitCode.WEB_LOADING_DISABLED,
                     "LOAD WEB is disabled; start the node with web_loading:=true to allow it");
         }
         IRI iri = IRI.create(url.trim());
-        if (iri.getScheme() == null || !iri.getScheme().startsWith("http")) {
+        if (!WebRedirects.isWeb(iri)) {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "'" + url + "' is not an http(s) URL");
         }
-        return load(newManager(null), new IRIDocumentSource(iri), url);
+        ImportResolver imports = new ImportResolver(allowed, true, null);
+        OWLOntology ontology = load(newManager(imports), new IRIDocumentSource(WebRedirects.finalLocation(iri)), url,
+                Optional::empty);
+        return new Loaded(ontology, imports.verdict(url, config.safeguards().ignoreMissingImports()));
     }
 
     public OWLOntology create(String ontologyIri) {
         try {
-            OWLOntologyManager manager = newManager(null);
+            OWLOntologyManager manager = newManager(new ImportResolver(allowed, false, null));
             return ontologyIri.isBlank() ? manager.createOntology() : manager.createOntology(IRI.create(ontologyIri));
         } catch (OWLOntologyCreationException e) {
             throw new ArmorException(ExitCode.LOAD_FAILED, "could not create ontology '" + ontologyIri + "': "
@@ -174,35 +194,15 @@ public final class OntologyFiles {
         return format;
     }
 
-    private static OWLOntology load(OWLOntologyManager manager, OWLOntologyDocumentSource source, String name) {
+    private static OWLOntology load(OWLOntologyManager manager, OWLOntologyDocumentSource source, String name,
+                                    Supplier<Optional<OntologyHeaders.Syntax>> looksLike) {
         try {
             return manager.loadOntologyFromOntologyDocument(source);
         } catch (UnparsableOntologyException e) {
-            throw new ArmorException(ExitCode.LOAD_FAILED, "could not parse '" + name + "': " + parserComplaint(e), e);
+            throw new ArmorException(ExitCode.LOAD_FAILED, ParseComplaints.explain(name, e, looksLike.get()), e);
         } catch (OWLOntologyCreationException | RuntimeException e) {
-            throw new ArmorException(ExitCode.LOAD_FAILED, "could not load '" + name + "': " + firstLines(e), e);
+            throw new ArmorException(ExitCode.LOAD_FAILED, "could not load '" + name + "': "
+                    + ParseComplaints.firstLine(e), e);
         }
-    }
-
-    /** The complaint of the parser that got furthest into the document, not the OWL API's preamble. */
-    private static String parserComplaint(UnparsableOntologyException e) {
-        String best = null;
-        long furthest = -1;
-        for (var entry : e.getExceptions().entrySet()) {
-            String message = String.valueOf(entry.getValue().getMessage()).strip();
-            java.util.regex.Matcher line = java.util.regex.Pattern.compile("(?i)line[^0-9]{0,3}(\\d+)").matcher(message);
-            long reached = line.find() ? Long.parseLong(line.group(1)) : 0;
-            if (reached > furthest) {
-                furthest = reached;
-                best = entry.getKey().getClass().getSimpleName() + ": " + message;
-            }
-        }
-        String complaint = best == null ? firstLines(e) : best.replaceAll("\\s+", " ");
-        return complaint.length() > 600 ? complaint.substring(0, 600) + " ..." : complaint;
-    }
-
-    private static String firstLines(Exception e) {
-        String message = String.valueOf(e.getMessage()).strip();
-        return message.length() > 600 ? message.substring(0, 600) + " ..." : message;
     }
 }

@@ -26,6 +26,7 @@ public final class CoreMain {
             System.exit(2);
         }
         CoreConfig config = config(JsonParser.parseString(args[1]).getAsJsonObject());
+        NetworkGuard.install(config);
         Thread watchParent = new Thread(() -> {
             try {
                 while (System.in.read() >= 0) {
@@ -58,7 +59,11 @@ public final class CoreMain {
                 json.has("lock_wait_ms") ? json.get("lock_wait_ms").getAsLong() : 30_000,
                 json.has("reasoner_timeout_ms") ? json.get("reasoner_timeout_ms").getAsLong() : 0,
                 json.has("mount_lease_s") ? json.get("mount_lease_s").getAsLong() : 0,
-                durability(json));
+                durability(json),
+                new CoreConfig.Safeguards(
+                        json.has("sparql_timeout_ms") ? json.get("sparql_timeout_ms").getAsLong() : 30_000,
+                        json.has("sparql_federated") && json.get("sparql_federated").getAsBoolean(),
+                        json.has("ignore_missing_imports") && json.get("ignore_missing_imports").getAsBoolean()));
     }
 
     private static CoreConfig.Durability durability(JsonObject json) {

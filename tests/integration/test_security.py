@@ -1,0 +1,461 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""The sandbox, attacked over ROS 2 (issue 20), and imports that resolve or say why (issue 21).
+
+Each test sends what an adversary (or an unlucky user) would send to a live node and checks
+that the node answers with a clear code, reads nothing outside `allowed_dirs`, and opens no
+network connection: a TCP listener started by the test must see no connection at all.
+
+Most attacks go to the session's node (default parameters, as users run it); the SPARQL time
+limit and the lenient import rule need a node of their own (`guarded`, in its own namespace).
+"""
+
+import concurrent.futures
+import os
+import pathlib
+import socket
+import threading
+import time
+import zipfile
+
+from armor_client import ArmorTransport, directive
+from conftest import TEST_ONTOLOGIES, start_node
+import pytest
+from test_contract_support import answer, failure, succeeded, unique_name
+from test_contract_support import load  # noqa: F401 (fixture)
+
+IMPORTS = TEST_ONTOLOGIES / 'imports'
+SECRET_IRI = 'http://www.example.org/armor-test/secret'
+SECRET_CLASS = f'<{SECRET_IRI}#TopSecret>'
+MiB = 1 << 20
+
+# Codes of this module's rules (core/.../api/ExitCode.java, docs/commands.md#exit-codes).
+LOAD_FAILED, TIMEOUT, PATH_NOT_ALLOWED, WEB_LOADING_DISABLED = 209, 211, 213, 218
+TOO_LARGE, IMPORTS_UNRESOLVED, FEDERATED_QUERY_DISABLED = 221, 222, 223
+
+# Five unconstrained triple patterns: the cross join of a small ontology with itself five
+# times (about 10^13 combinations); the filter needs all five, so nothing prunes it early.
+CROSS_JOIN = ('SELECT (COUNT(*) AS ?n) WHERE { ?a ?b ?c . ?d ?e ?f . ?g ?h ?i . ?j ?k ?l . '
+              '?m ?n2 ?o FILTER(STRLEN(CONCAT(STR(?a), STR(?d), STR(?g), STR(?j), STR(?m))) < 0) }')
+
+
+class Listener:
+    """A TCP server on 127.0.0.1 that records every connection it accepts (and closes it)."""
+
+    def __init__(self):
+        self._server = socket.create_server(('127.0.0.1', 0))
+        self._server.settimeout(0.2)
+        self.port = self._server.getsockname()[1]
+        self.connections = []
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._accept, daemon=True, name='listener')
+        self._thread.start()
+
+    def _accept(self):
+        while not self._stop.is_set():
+            try:
+                connection, peer = self._server.accept()
+            except socket.timeout:
+                continue
+            connection.settimeout(0.5)
+            try:
+                first = connection.recv(200)
+            except OSError:
+                first = b''
+            self.connections.append((peer, first))
+            connection.close()
+
+    def close(self):
+        self._stop.set()
+        self._thread.join()
+        self._server.close()
+
+
+@pytest.fixture(scope='module')
+def listener():
+    server = Listener()
+    yield server
+    server.close()
+
+
+@pytest.fixture
+def no_connection(listener):
+    """The listener; at the end of the test it must have seen no connection."""
+    seen = len(listener.connections)
+    yield listener
+    assert listener.connections[seen:] == [], 'the core opened a network connection'
+
+
+@pytest.fixture(scope='module')
+def outside(tmp_path_factory):
+    """A directory outside every allowed directory, holding a secret in several forms."""
+    directory = tmp_path_factory.mktemp('outside')
+    secret = functional(SECRET_IRI, body=f'Declaration(Class({SECRET_CLASS}))\n'
+                        f'ClassAssertion({SECRET_CLASS} <{SECRET_IRI}#launchCode>)')
+    (directory / 'secret.owl').write_text(secret)
+    with zipfile.ZipFile(directory / 'secret.jar', 'w') as jar:
+        jar.writestr('secret.owl', secret)
+    (directory / 'secret.txt').write_text('the launch code is 0000\n')
+    return directory
+
+
+def functional(ontology_iri, imports=(), body=''):
+    """An ontology document in OWL functional syntax."""
+    lines = [f'Ontology(<{ontology_iri}>']
+    lines += [f'Import(<{imported}>)' for imported in imports]
+    lines += [body, ')', '']
+    return '\n'.join(lines)
+
+
+def importer(folder: pathlib.Path, *imports: str) -> pathlib.Path:
+    """A new ontology file in folder whose only content is the given imports."""
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / f'{unique_name("importer")}.owl'
+    path.write_text(functional(f'http://www.example.org/armor-test/{path.stem}', imports,
+                               'Declaration(Class(<http://www.example.org/armor-test/A>))'))
+    return path
+
+
+def load_fails(call, path, code):
+    name = unique_name('attack')
+    response = failure(call, name, 'LOAD FILE', str(path), '', 'false', 'HERMIT', 'false',
+                       code=code)
+    assert name not in answer(call, '', 'GET ALL REFS'), 'a refused LOAD left a reference'
+    return response
+
+
+# --- issue 20.1: owl:imports stay inside allowed_dirs -----------------------------------------
+
+@pytest.mark.parametrize('target', [
+    'file://{outside}/secret.owl',
+    'file:{outside}/secret.owl',
+    'jar:file://{outside}/secret.jar!/secret.owl',
+])
+def test_an_import_of_a_file_outside_allowed_dirs_is_213(call, armor_node, outside, target):
+    imported = target.format(outside=outside)
+    response = load_fails(call, importer(armor_node.scratch, imported), PATH_NOT_ALLOWED)
+    assert imported in response.error_description
+    assert 'allowed_dirs' in response.error_description
+
+
+def test_a_catalog_entry_outside_allowed_dirs_is_213(call, armor_node, outside):
+    folder = armor_node.scratch / unique_name('catalogued')
+    path = importer(folder, SECRET_IRI)
+    relative = os.path.relpath(outside / 'secret.owl', folder)
+    (folder / 'catalog-v001.xml').write_text(
+        '<catalog xmlns="urn:oasis:names:tc:entity:xmlns:xml:catalog">'
+        f'<uri name="{SECRET_IRI}" uri="{relative}"/></catalog>')
+    response = load_fails(call, path, PATH_NOT_ALLOWED)
+    assert SECRET_IRI in response.error_description
+
+
+def test_a_symlink_beside_the_importing_file_is_never_read(call, armor_node, outside):
+    folder = armor_node.scratch / unique_name('linked')
+    path = importer(folder, SECRET_IRI)
+    os.symlink(outside / 'secret.owl', folder / 'secret.owl')
+    response = load_fails(call, path, IMPORTS_UNRESOLVED)
+    assert SECRET_IRI in response.error_description
+
+
+def test_a_refused_import_is_refused_by_the_lenient_rule_too(guarded_call, guarded, outside):
+    path = importer(guarded.scratch, f'file://{outside}/secret.owl')
+    load_fails(guarded_call, path, PATH_NOT_ALLOWED)
+
+
+# --- issue 20.2: no network connection with web_loading off -----------------------------------
+
+@pytest.mark.parametrize('template', [
+    'http://127.0.0.1:{port}/tbox.owl',
+    'https://127.0.0.1:{port}/tbox.owl',
+    'ftp://127.0.0.1:{port}/tbox.owl',
+    'jar:http://127.0.0.1:{port}/tbox.jar!/tbox.owl',
+    'jar:https://127.0.0.1:{port}/tbox.jar!/tbox.owl',
+])
+def test_an_import_over_any_scheme_opens_no_connection(call, armor_node, no_connection,
+                                                       template):
+    imported = template.format(port=no_connection.port)
+    response = load_fails(call, importer(armor_node.scratch, imported), IMPORTS_UNRESOLVED)
+    assert imported in response.error_description
+    assert 'web_loading' in response.error_description
+
+
+def test_load_web_opens_no_connection(call, no_connection):
+    load_fails_web = failure(call, unique_name('web'), 'LOAD WEB',
+                             f'http://127.0.0.1:{no_connection.port}/robotics.owl', '', 'false',
+                             'HERMIT', 'false', code=WEB_LOADING_DISABLED)
+    assert 'web_loading' in load_fails_web.error_description
+
+
+@pytest.mark.parametrize('query', [
+    'SELECT * WHERE {{ SERVICE <http://127.0.0.1:{port}/sparql> {{ ?s ?p ?o }} }}',
+    'SELECT * WHERE {{ SERVICE SILENT <http://127.0.0.1:{port}/sparql> {{ ?s ?p ?o }} }}',
+    'SELECT * WHERE {{ ?s a ?t OPTIONAL {{ SERVICE SILENT <http://127.0.0.1:{port}/q> '
+    '{{ ?s ?p ?o }} }} }}',
+    'SELECT * WHERE {{ {{ SELECT ?s WHERE {{ SERVICE <http://127.0.0.1:{port}/q> {{ ?s ?p ?o }} '
+    '}} }} }}',
+    'ASK {{ ?s ?p ?o FILTER EXISTS {{ SERVICE SILENT <http://127.0.0.1:{port}/q> {{ ?s ?p ?o }} '
+    '}} }}',
+    'SELECT * WHERE {{ BIND(<http://127.0.0.1:{port}/q> AS ?endpoint) SERVICE ?endpoint '
+    '{{ ?s ?p ?o }} }}',
+])
+def test_sparql_service_is_refused_without_a_connection(call, load, no_connection, query):
+    reference = load()
+    for words in ('QUERY SPARQL', 'QUERY SPARQL FORMATTED'):
+        response = failure(call, reference, words, query.format(port=no_connection.port),
+                           code=FEDERATED_QUERY_DISABLED)
+        assert 'SERVICE' in response.error_description
+        assert 'sparql_federated' in response.error_description
+
+
+def test_external_entities_are_never_fetched(call, armor_node, load, no_connection, outside):
+    document = armor_node.scratch / f'{unique_name("xxe")}.owl'
+    document.write_text(f'''<?xml version="1.0"?>
+<!DOCTYPE rdf:RDF [
+  <!ENTITY remote SYSTEM "http://127.0.0.1:{no_connection.port}/entity">
+  <!ENTITY secret SYSTEM "file://{outside}/secret.txt">
+]>
+<rdf:RDF xmlns:owl="http://www.w3.org/2002/07/owl#"
+     xmlns:rdf="http://www.w3.org/1999/02/22-rdf-syntax-ns#"
+     xmlns:rdfs="http://www.w3.org/2000/01/rdf-schema#">
+  <owl:Ontology rdf:about="http://www.example.org/armor-test/xxe"/>
+  <owl:Class rdf:about="http://www.example.org/armor-test/xxe#A">
+    <rdfs:label>&remote;</rdfs:label>
+    <rdfs:comment>&secret;</rdfs:comment>
+  </owl:Class>
+</rdf:RDF>
+''')
+    name = unique_name('xxe')
+    response = call(name, 'LOAD FILE', str(document), '', 'false', 'HERMIT', 'false')
+    if response.success:
+        try:
+            values = answer(call, name, 'QUERY SPARQL',
+                            'SELECT ?v WHERE { ?s ?p ?v FILTER(isLiteral(?v)) }')
+            assert not any('launch code' in value for value in values), values
+        finally:
+            call(name, 'DROP')
+
+
+# --- issue 20.3 / 20.4: LOG FILE ON takes only a regular file, confined ------------------------
+
+def test_log_file_on_a_fifo_is_refused_and_freezes_nothing(call, armor_node, load):
+    reference = load()
+    fifo = armor_node.scratch / f'{unique_name("log")}.fifo'
+    os.mkfifo(fifo)
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=1)
+    logging_on = pool.submit(call, '', 'LOG FILE ON', str(fifo), timeout_s=120)
+    try:
+        deadline = time.monotonic() + 3
+        while not logging_on.done() and time.monotonic() < deadline:
+            time.sleep(0.05)
+        # With the old lock, this query waited until a reader opened the FIFO.
+        assert answer(call, reference, 'QUERY IND CLASS', 'Robot', timeout_s=30) != []
+        response = logging_on.result(timeout=30)
+        assert not response.success and response.exit_code == LOAD_FAILED, response
+        assert 'regular file' in response.error_description
+    finally:
+        # Releases a core stuck in open() (the bug), then leaves logging off.
+        reader = os.open(fifo, os.O_RDONLY | os.O_NONBLOCK)
+        try:
+            logging_on.result(timeout=60)
+        finally:
+            os.close(reader)
+            pool.shutdown()
+            call('', 'LOG FILE OFF')
+
+
+def test_log_file_on_a_directory_is_refused(call, armor_node):
+    failure(call, '', 'LOG FILE ON', str(armor_node.scratch), code=LOAD_FAILED)
+
+
+def test_log_file_on_a_dangling_symlink_to_outside_is_213(call, armor_node, outside):
+    target = outside / f'{unique_name("created")}.log'
+    link = armor_node.scratch / f'{unique_name("dangling")}.log'
+    os.symlink(target, link)
+    response = failure(call, '', 'LOG FILE ON', str(link), code=PATH_NOT_ALLOWED)
+    assert 'allowed_dirs' in response.error_description
+    chain = armor_node.scratch / f'{unique_name("chain")}.log'
+    os.symlink(link, chain)
+    failure(call, '', 'LOG FILE ON', str(chain), code=PATH_NOT_ALLOWED)
+    directory_link = armor_node.scratch / unique_name('outside_dir')
+    os.symlink(outside, directory_link)
+    failure(call, '', 'LOG FILE ON', str(directory_link / 'x.log'), code=PATH_NOT_ALLOWED)
+    assert not target.exists() and not (outside / 'x.log').exists()
+
+
+def test_log_file_records_directives_and_stops(call, armor_node, load):
+    reference = load()
+    log = armor_node.scratch / f'{unique_name("directives")}.log'
+    succeeded(call, '', 'LOG FILE ON', str(log))
+    try:
+        succeeded(call, reference, 'QUERY IND CLASS', 'Robot')
+        deadline = time.monotonic() + 30
+        while 'QUERY IND CLASS' not in (log.read_text() if log.exists() else ''):
+            assert time.monotonic() < deadline, 'no line reached the log file'
+            time.sleep(0.05)
+    finally:
+        succeeded(call, '', 'LOG FILE OFF')
+
+
+# --- issue 20.5: SPARQL has a time limit and evaluates outside the reference lock --------------
+
+@pytest.fixture(scope='module')
+def guarded(tmp_path_factory):
+    """A node of its own: a 3 s default SPARQL limit, 3 s lock waits, lenient imports."""
+    node = start_node(tmp_path_factory.mktemp('guarded'), '-p', 'sparql_timeout_ms:=3000',
+                      '-p', 'lock_wait_ms:=3000', '-p', 'ignore_missing_imports:=true',
+                      namespace='/guarded')
+    yield node
+    node.stop()
+
+
+@pytest.fixture(scope='module')
+def guarded_transport(guarded):
+    transport = ArmorTransport(namespace='/guarded', service_wait_s=120.0)
+    yield transport
+    transport.close()
+
+
+@pytest.fixture
+def guarded_call(guarded_transport):
+    def send(reference, words, *args, client='test', timeout_s=120):
+        command, primary, secondary = (words.split() + ['', '', ''])[:3]
+        return guarded_transport.call(directive(client, reference, command, primary, secondary,
+                                                args), timeout_s=timeout_s)
+    return send
+
+
+def test_a_cross_join_stops_at_the_default_limit_and_locks_nothing(guarded_call):
+    reference = 'robotics'
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=1)
+    started = time.monotonic()
+    query = pool.submit(guarded_call, reference, 'QUERY SPARQL', CROSS_JOIN, timeout_s=120)
+    writes_during_query = 0
+    try:
+        while not query.done():
+            individual = unique_name('visitor')
+            response = guarded_call(reference, 'ADD IND CLASS', individual, 'Person',
+                                    timeout_s=60)
+            assert response.success, f'{response.exit_code} {response.error_description}'
+            writes_during_query += not query.done()
+            guarded_call(reference, 'REMOVE IND', individual)
+        response = query.result()
+    finally:
+        pool.shutdown()
+    assert response.success and response.timeout, (response.exit_code,
+                                                    response.error_description)
+    assert time.monotonic() - started < 60
+    assert writes_during_query > 0, 'no change was answered while the query ran'
+
+
+def test_rows_found_before_the_limit_are_answered(guarded_call):
+    query = ('SELECT ?x WHERE { { ?x a <http://www.example.org/robotics#Robot> } UNION '
+             + CROSS_JOIN.split('WHERE', 1)[1] + ' }')
+    response = guarded_call('robotics', 'QUERY SPARQL', query, '1000')
+    assert response.success and response.timeout, response.error_description
+    assert '<http://www.example.org/robotics#robot1>' in list(response.queried_objects)
+
+
+# --- issue 20.7: size limits, refused before any work -----------------------------------------
+
+def _journal_bytes(node) -> int:
+    return sum(path.stat().st_size for path in (node.scratch / 'state').rglob('*')
+               if path.is_file())
+
+
+def test_a_50_mb_name_is_221_and_never_journaled(call, armor_node, load):
+    reference = load()
+    before = _journal_bytes(armor_node)
+    response = failure(call, reference, 'ADD IND CLASS', 'x' * (50 * MiB), 'Robot',
+                       code=TOO_LARGE)
+    assert 'argument 0' in response.error_description
+    assert len(response.error_description) < 1000
+    assert _journal_bytes(armor_node) - before < 4096
+    assert answer(call, reference, 'QUERY IND CLASS', 'Robot') != []
+
+
+def test_a_50_mb_query_text_is_221(call, load):
+    reference = load()
+    query = 'SELECT * WHERE { ?s ?p ?o } #' + 'x' * (50 * MiB)
+    failure(call, reference, 'QUERY SPARQL', query, code=TOO_LARGE)
+
+
+def test_limits_per_argument_directive_name_and_list(call, armor, load):
+    reference = load()
+    # Just inside the argument limit: an (unknown) class name of almost 1 MiB is answered.
+    assert answer(call, reference, 'QUERY IND CLASS', 'C' * (MiB - 64)) == []
+    failure(call, reference, 'QUERY IND CLASS', 'C' * (MiB + 1), code=TOO_LARGE)
+    # Five arguments of 0.9 MiB each: every one is fine, the directive (4 MiB) is not.
+    names = [f'{i}' + 'n' * (9 * MiB // 10) for i in range(5)]
+    response = failure(call, reference, 'DISJOINT IND', *names, code=TOO_LARGE)
+    assert 'directive' in response.error_description
+    response = failure(call, reference, 'QUERY IND CLASS', 'Robot', code=TOO_LARGE,
+                       client='c' * 2000)
+    assert 'client_name' in response.error_description
+
+    def refused_list(requests):
+        result = armor.call_list(requests, timeout_s=300)
+        assert not result.success
+        assert len(result.armor_responses) == len(requests)
+        assert {r.exit_code for r in result.armor_responses} == {TOO_LARGE}
+        return result
+
+    refused_list([directive('test', reference, 'QUERY', 'IND', 'CLASS', ['Robot'])] * 10_001)
+    big = 'y' * (3 * MiB)
+    refused_list([directive('test', reference, 'ADD', 'IND', 'CLASS', [big + str(i), 'Robot'])
+                  for i in range(3)])
+    assert answer(call, reference, 'QUERY IND CLASS', 'Robot') == [
+        '<http://www.example.org/robotics#robot1>']
+
+
+# --- issue 21.2 / 21.3: imports resolve beside the file or through a catalog, or say why -------
+
+def test_a_functional_syntax_import_resolves_from_the_same_folder(call, load):
+    reference = load(path=IMPORTS / 'functional' / 'tasks.owl')
+    assert answer(call, reference, 'QUERY IND CLASS',
+                  '<http://www.example.org/armor-test/upper#Event>') == [
+        '<http://www.example.org/armor-test/tasks#goToKitchen>']
+
+
+def test_an_rdfxml_import_declared_by_rdf_about_resolves_from_the_same_folder(call, load):
+    reference = load(path=IMPORTS / 'rdfxml' / 'site.owl')
+    assert answer(call, reference, 'QUERY IND CLASS',
+                  '<http://www.example.org/armor-test/map#Location>') == [
+        '<http://www.example.org/armor-test/site#lab>']
+
+
+def test_a_catalog_maps_an_import_to_a_file_in_a_subfolder(call, load):
+    reference = load(path=IMPORTS / 'catalog' / 'robot-tasks.ttl')
+    assert answer(call, reference, 'QUERY IND CLASS',
+                  '<http://www.example.org/armor-test/vendor#Gripper>') == [
+        '<http://www.example.org/armor-test/robot-tasks#gripper1>']
+
+
+def test_an_unresolved_web_import_is_222_naming_it_and_why(call):
+    response = load_fails(call, IMPORTS / 'web-only' / 'students.owl', IMPORTS_UNRESOLVED)
+    assert 'http://www.example.org/armor-test/university.owl' in response.error_description
+    assert 'web_loading' in response.error_description
+    assert 'ignore_missing_imports' in response.error_description
+
+
+def test_the_lenient_rule_loads_and_lists_the_unresolved_imports(guarded_call):
+    name = unique_name('students')
+    response = guarded_call(name, 'LOAD FILE', str(IMPORTS / 'web-only' / 'students.owl'), '',
+                            'false', 'HERMIT', 'false')
+    try:
+        assert response.success and response.exit_code == 0, response.error_description
+        assert 'http://www.example.org/armor-test/university.owl' in response.error_description
+    finally:
+        guarded_call(name, 'DROP')
+
+
+# --- issue 11.5: a file that is no ontology says so -------------------------------------------
+
+def test_a_file_that_is_no_ontology_says_so_and_which_syntaxes_were_tried(call, armor_node):
+    notes = armor_node.scratch / f'{unique_name("notes")}.owl'
+    notes.write_text('shopping list: milk, bread\n')
+    response = load_fails(call, notes, LOAD_FAILED)
+    description = response.error_description
+    assert 'not an ontology in any supported syntax' in description
+    for syntax in ('RDF/XML', 'OWL/XML', 'Functional', 'Turtle', 'Manchester'):
+        assert syntax in description, description
+    for internal in ('HDT', 'RioParserImpl', 'org.eclipse', 'Exception'):
+        assert internal not in description, description
