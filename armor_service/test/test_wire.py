@@ -45,3 +45,14 @@ def test_response_fields_are_copied_by_name():
     assert response.error_description == 'slow' and response.is_consistent
     assert list(response.queried_objects) == ['a']
     assert [(i.key, i.value) for i in response.sparql_queried_objects] == [('x', '1'), ('', '')]
+
+
+def test_a_frame_the_core_would_not_read_is_refused_before_sending(monkeypatch):
+    monkeypatch.setattr(wire, 'MAX_FRAME_BYTES', 1000)
+    left, right = socket.socketpair()
+    with left, right:
+        with pytest.raises(wire.FrameTooLarge, match='limit is 1,000'):
+            wire.send_frame(left, {'id': 1, 'args': ['x' * 2000]})
+        right.setblocking(False)
+        with pytest.raises(BlockingIOError):
+            right.recv(1)

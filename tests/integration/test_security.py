@@ -206,6 +206,14 @@ def test_sparql_service_is_refused_without_a_connection(call, load, no_connectio
         assert 'sparql_federated' in response.error_description
 
 
+def test_an_import_inside_an_axiom_is_208_and_never_fetched(call, load, no_connection, outside):
+    reference = load()
+    response = failure(call, reference, 'ADD AXIOM',
+                       f'Import(<http://127.0.0.1:{no_connection.port}/x.owl>) '
+                       f'Import(<file://{outside}/secret.owl>) SubClassOf(:Robot :Agent)', code=208)
+    assert 'Import' in response.error_description
+
+
 def test_external_entities_are_never_fetched(call, armor_node, load, no_connection, outside):
     document = armor_node.scratch / f'{unique_name("xxe")}.owl'
     document.write_text(f'''<?xml version="1.0"?>

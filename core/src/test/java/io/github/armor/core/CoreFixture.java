@@ -26,6 +26,10 @@ final class CoreFixture {
         core = new ArmorCore(CoreConfig.defaults(dirs));
     }
 
+    CoreFixture(CoreConfig config) {
+        core = new ArmorCore(config);
+    }
+
     /** Runs "COMMAND PRIMARY SECONDARY" (specs may be omitted) on a reference as client "test". */
     Response run(String reference, String words, String... args) {
         return runAs("test", reference, words, args);
