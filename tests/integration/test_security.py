@@ -416,25 +416,20 @@ def test_limits_per_argument_directive_name_and_list(call, armor, load):
 
 # --- issue 21.2 / 21.3: imports resolve beside the file or through a catalog, or say why -------
 
-def test_a_functional_syntax_import_resolves_from_the_same_folder(call, load):
-    reference = load(path=IMPORTS / 'functional' / 'tasks.owl')
+@pytest.mark.parametrize('document, question, individual', [
+    # Functional syntax importing a functional-syntax neighbour (the SOMA.owl / DUL.owl case).
+    ('functional/tasks.owl', 'upper#Event', 'tasks#goToKitchen'),
+    # RDF/XML importing a neighbour that declares its IRI with rdf:about only (no xml:base).
+    ('rdfxml/site.owl', 'map#Location', 'site#lab'),
+    # Turtle whose import catalog-v001.xml maps to a document in a subfolder.
+    ('catalog/robot-tasks.ttl', 'vendor#Gripper', 'robot-tasks#gripper1'),
+])
+def test_imports_resolve_beside_the_file_or_through_its_catalog(call, load, document, question,
+                                                                  individual):
+    reference = load(path=IMPORTS / document)
     assert answer(call, reference, 'QUERY IND CLASS',
-                  '<http://www.example.org/armor-test/upper#Event>') == [
-        '<http://www.example.org/armor-test/tasks#goToKitchen>']
-
-
-def test_an_rdfxml_import_declared_by_rdf_about_resolves_from_the_same_folder(call, load):
-    reference = load(path=IMPORTS / 'rdfxml' / 'site.owl')
-    assert answer(call, reference, 'QUERY IND CLASS',
-                  '<http://www.example.org/armor-test/map#Location>') == [
-        '<http://www.example.org/armor-test/site#lab>']
-
-
-def test_a_catalog_maps_an_import_to_a_file_in_a_subfolder(call, load):
-    reference = load(path=IMPORTS / 'catalog' / 'robot-tasks.ttl')
-    assert answer(call, reference, 'QUERY IND CLASS',
-                  '<http://www.example.org/armor-test/vendor#Gripper>') == [
-        '<http://www.example.org/armor-test/robot-tasks#gripper1>']
+                  f'<http://www.example.org/armor-test/{question}>') == [
+        f'<http://www.example.org/armor-test/{individual}>']
 
 
 def test_an_unresolved_web_import_is_222_naming_it_and_why(call):

@@ -27,7 +27,11 @@ final class CoreFixture {
     }
 
     CoreFixture(CoreConfig config) {
-        core = new ArmorCore(config);
+        this(new ArmorCore(config));
+    }
+
+    CoreFixture(ArmorCore core) {
+        this.core = core;
     }
 
     /** Runs "COMMAND PRIMARY SECONDARY" (specs may be omitted) on a reference as client "test". */

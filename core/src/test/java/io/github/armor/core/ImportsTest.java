@@ -108,6 +108,29 @@ class ImportsTest {
     }
 
     @Test
+    void aRestoredReferenceResolvesItsImportsBesideItsSourceAgain() {
+        Path state = scratch.resolve("state");
+        CoreConfig.Durability durability = new CoreConfig.Durability(state, true, false, 1, 3600);
+        CoreConfig config = new CoreConfig(true, "HERMIT", List.of(CoreFixture.TEST_ONTOLOGIES, scratch), false,
+                30_000, 0, 0, durability, CoreConfig.Safeguards.DEFAULT);
+        String event = "<http://www.example.org/armor-test/upper#Event>";
+        try (ArmorCore first = new ArmorCore(config)) {
+            first.restoreState();
+            CoreFixture f = new CoreFixture(first);
+            f.ok("tasks", "LOAD FILE", IMPORTS.resolve("functional/tasks.owl").toString(), "", "false", "HERMIT",
+                    "false");
+            // One change: the reference is checkpointed, then restored from that checkpoint.
+            f.ok("tasks", "ADD IND CLASS", "patrol", "Navigation");
+        }
+        try (ArmorCore second = new ArmorCore(config)) {
+            second.restoreState();
+            assertEquals(List.of("<http://www.example.org/armor-test/tasks#goToKitchen>",
+                    "<http://www.example.org/armor-test/tasks#patrol>"),
+                    new CoreFixture(second).ok("tasks", "QUERY IND CLASS", event).queriedObjects());
+        }
+    }
+
+    @Test
     void anUnresolvedImportIs222NamingItAndWhy() {
         CoreFixture f = fixture(false, false);
         Response refused = load(f, "students", IMPORTS.resolve("web-only/students.owl"));
