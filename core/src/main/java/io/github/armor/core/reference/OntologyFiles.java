@@ -69,7 +69,7 @@ public final class OntologyFiles {
      * A fresh manager whose imports go through {@code imports} only, so that loading never
      * reaches a file or the network on its own.
      */
-    private OWLOntologyManager newManager(ImportResolver imports) {
+    private static OWLOntologyManager newManager(ImportResolver imports) {
         OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
         manager.setOntologyParsers(java.util.stream.StreamSupport.stream(manager.getOntologyParsers().spliterator(), false)
                 .filter(p -> UNUSED_PARSERS.stream().noneMatch(p.getSupportedFormat().getKey()::contains))
@@ -84,16 +84,9 @@ public final class OntologyFiles {
         return manager;
     }
 
-    /** A manager for ontology text a client sends inline (ADD AXIOM): it resolves no import at all. */
+    /** A manager that resolves no import at all: for CREATE and for ontology text a client sends (ADD AXIOM). */
     public static OWLOntologyManager inlineManager() {
-        OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
-        ImportResolver none = new ImportResolver(new AllowedPaths(List.of()), false, null);
-        manager.setOntologyLoaderConfiguration(manager.getOntologyLoaderConfiguration()
-                .setMissingImportHandlingStrategy(MissingImportHandlingStrategy.SILENT).setFollowRedirects(false));
-        manager.getIRIMappers().clear();
-        manager.getIRIMappers().add(none);
-        manager.addMissingImportListener(none);
-        return manager;
+        return newManager(new ImportResolver(new AllowedPaths(List.of()), false, null));
     }
 
     /** A client path, made absolute and checked against the allowed directories (symbolic links followed). */
@@ -150,7 +143,7 @@ public final class OntologyFiles {
 
     public OWLOntology create(String ontologyIri) {
         try {
-            OWLOntologyManager manager = newManager(new ImportResolver(allowed, false, null));
+            OWLOntologyManager manager = inlineManager();
             return ontologyIri.isBlank() ? manager.createOntology() : manager.createOntology(IRI.create(ontologyIri));
         } catch (OWLOntologyCreationException e) {
             throw new ArmorException(ExitCode.LOAD_FAILED, "could not create ontology '" + ontologyIri + "': "
