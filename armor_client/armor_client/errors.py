@@ -70,7 +70,8 @@ class ArmorMountError(ArmorServiceInternalError):
 
 
 class ArmorArgumentError(ArmorServiceInternalError):
-    """The directive itself is wrong: 101, 201, 202, 205, 207, 208 or 215."""
+    """The directive itself is wrong: 101, 201, 202, 205, 207, 208, 215, 221 (too large) or 223
+    (a federated SPARQL query the node does not allow)."""
 
 
 class ArmorUnknownReferenceError(ArmorServiceInternalError):
@@ -78,7 +79,7 @@ class ArmorUnknownReferenceError(ArmorServiceInternalError):
 
 
 class ArmorFileError(ArmorServiceInternalError):
-    """An ontology could not be read or written: 209, 213, 214 or 218."""
+    """An ontology could not be read or written: 209, 213, 214, 218 or 222 (unresolved imports)."""
 
 
 class ArmorReasonerError(ArmorServiceInternalError):
@@ -99,9 +100,9 @@ class ArmorCoreUnavailableError(ArmorServiceInternalError):
 
 _CLASS_OF_CODE: Dict[int, Type[ArmorServiceInternalError]] = {
     **dict.fromkeys((102, 203), ArmorMountError),
-    **dict.fromkeys((101, 201, 202, 205, 207, 208, 215), ArmorArgumentError),
+    **dict.fromkeys((101, 201, 202, 205, 207, 208, 215, 221, 223), ArmorArgumentError),
     206: ArmorUnknownReferenceError,
-    **dict.fromkeys((209, 213, 214, 218), ArmorFileError),
+    **dict.fromkeys((209, 213, 214, 218, 222), ArmorFileError),
     **dict.fromkeys((210, 217, 219), ArmorReasonerError),
     211: ArmorTimeLimitError,
     212: ArmorRolledBackError,

@@ -74,6 +74,8 @@ def test_formatted_sparql_rows_restrictions_and_timeouts():
     (102, errors.ArmorMountError), (203, errors.ArmorMountError),
     (101, errors.ArmorArgumentError), (208, errors.ArmorArgumentError),
     (206, errors.ArmorUnknownReferenceError), (213, errors.ArmorFileError),
+    (221, errors.ArmorArgumentError), (222, errors.ArmorFileError),
+    (223, errors.ArmorArgumentError),
     (210, errors.ArmorReasonerError), (211, errors.ArmorTimeLimitError),
     (212, errors.ArmorRolledBackError), (216, errors.ArmorCoreUnavailableError),
     (299, errors.ArmorServiceInternalError)])
