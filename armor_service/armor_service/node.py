@@ -125,6 +125,10 @@ class ArmorService(Node):
         path = self._value('preload_file')
         if not path:
             return
+        name = self._value('preload_reference')
+        listing = {'client_name': 'armor_service', 'reference_name': '', 'command': 'GET',
+                   'primary_command_spec': 'ALL', 'secondary_command_spec': 'REFS', 'args': []}
+        restored = name in send({'op': 'directive', 'directive': listing})['response']['queried_objects']
         directive = {
             'client_name': 'armor_service', 'reference_name': self._value('preload_reference'),
             'command': 'LOAD', 'primary_command_spec': 'FILE', 'secondary_command_spec': '',
@@ -136,8 +140,14 @@ class ArmorService(Node):
         if not reply['success']:
             raise RuntimeError(f'preloading {path} failed: {reply["exit_code"]} '
                                f'{reply["error_description"]}')
-        self.get_logger().info(f'preloaded {path} as reference '
-                               f'"{self._value("preload_reference")}"')
+        if restored:
+            # LOAD of the same file reuses the reference: the file was not read again.
+            self.get_logger().info(
+                f'reference "{name}" restored with the changes of earlier sessions, not reloaded '
+                f'from {path}; start with -p restore_state:=false (make run-clean) for a clean '
+                'start')
+        else:
+            self.get_logger().info(f'preloaded {path} as reference "{name}"')
 
     def _default_state_dir(self) -> str:
         """One directory per ROS domain and node name: two nodes never share journals."""

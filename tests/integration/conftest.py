@@ -13,30 +13,64 @@ ONTOLOGIES = REPO / 'ontologies'
 TEST_ONTOLOGIES = REPO / 'tests' / 'ontologies'
 NS = 'http://www.example.org/robotics#'
 
-def _reserve_domain() -> str:
-    """A DDS domain no other test run on this machine is using, held until this process ends.
+def domains_in_use() -> set:
+    """DDS domains that have a participant on this machine, whoever started it.
 
-    Two runs in one domain would each reach the other's node (a request goes to every server
-    of a service name). Child processes inherit ROS_DOMAIN_ID and so share this run's domain.
+    An RTPS participant of domain d binds UDP ports from 7400 + 250 * d (discovery and user
+    traffic, 250 ports a domain); a bound port there means someone is on that domain. Ports of
+    other programs that fall in a domain's range only make a domain look taken, never free.
     """
+    taken = set()
+    for table in ('/proc/net/udp', '/proc/net/udp6'):
+        try:
+            lines = pathlib.Path(table).read_text().splitlines()[1:]
+        except OSError:
+            continue
+        for line in lines:
+            port = int(line.split()[1].rsplit(':', 1)[1], 16)
+            if port >= 7400:
+                taken.add((port - 7400) // 250)
+    return taken
+
+
+def reserve_domain() -> str:
+    """A DDS domain no other test run and no running node on this machine is using, held until
+    this process ends (or until release_domain).
+
+    Two runs in one domain would each reach the other's node (a request goes to every server of
+    a service name), and so would a run in the domain of a user's own node: the domain the user
+    exported, domain 0 and every domain with a participant are never chosen. Child processes
+    inherit ROS_DOMAIN_ID and so share this run's domain.
+    """
+    avoid = domains_in_use() | {0}
+    exported = os.environ.get('ROS_DOMAIN_ID', '')
+    if exported.isdigit():
+        avoid.add(int(exported))
     start = random.Random(os.getpid()).randint(1, 232)
     for offset in range(232):
         domain = (start + offset) % 232 + 1
+        if domain in avoid:
+            continue
         handle = open(f'/tmp/armor-ros-domain-{domain}.lock', 'w')
         try:
             fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:
             handle.close()
             continue
-        _DOMAIN_LOCKS.append(handle)
+        _DOMAIN_LOCKS[str(domain)] = handle
         return str(domain)
-    raise RuntimeError('every DDS domain 1-232 is held by another test run')
+    raise RuntimeError('every DDS domain 1-232 is in use or held by another test run')
 
 
-_DOMAIN_LOCKS = []
-# Chosen before rclpy starts; a run that sets ROS_DOMAIN_ID itself keeps it.
-if 'ROS_DOMAIN_ID' not in os.environ:
-    os.environ['ROS_DOMAIN_ID'] = _reserve_domain()
+def release_domain(domain: str) -> None:
+    """Let other runs have a domain this process reserved."""
+    _DOMAIN_LOCKS.pop(domain).close()
+
+
+_DOMAIN_LOCKS = {}
+# Chosen before rclpy starts, always: a ROS_DOMAIN_ID the user exported for their own node
+# (make run) is the one domain the tests must stay out of.
+os.environ['ROS_DOMAIN_ID'] = reserve_domain()
 
 
 def iri(name: str) -> str:

@@ -67,8 +67,11 @@ public final class ArmorCore implements AutoCloseable {
                 restorable.records().forEach(this::replay);
                 reference.synchroniseReasoner();
                 state.adopt(restorable);
-                LOG.warn("restored reference '{}' ({} journal records) in {} ms", restorable.name(),
-                        restorable.records().size(), (System.nanoTime() - start) / 1_000_000);
+                LOG.info("restored reference '{}' from the state directory {}: {} axioms, {} individuals,"
+                        + " {} journal record(s) of earlier sessions replayed, in {} ms", restorable.name(),
+                        config.durability().stateDir(), reference.ontology().getAxiomCount(),
+                        reference.ontology().getIndividualsInSignature().size(), restorable.records().size(),
+                        (System.nanoTime() - start) / 1_000_000);
             } catch (RuntimeException e) {
                 LOG.error("could not restore reference '{}'", restorable.name(), e);
             }

@@ -25,7 +25,8 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.stream.Collectors;
 
 /**
- * LOG SCREEN / LOG FILE: a line per directive and its outcome, to stderr and/or a file.
+ * LOG SCREEN / LOG FILE: a line per directive and its outcome, to stderr (the node logs it at INFO)
+ * and/or a file.
  *
  * <p>A directive only formats its line and queues it; one writer thread does all the writing.
  * A slow disk or a full pipe therefore delays log lines, never a directive: no lock a directive
@@ -136,11 +137,16 @@ public final class DirectiveLog {
                 return;
             }
             long lost = dropped.getAndSet(0);
-            String text = (lost > 0 ? Instant.now() + " " + lost + " directive log line(s) dropped: the log could"
-                    + " not keep up" + System.lineSeparator() : "") + line.text();
+            String droppedText = lost > 0 ? Instant.now() + " " + lost + " directive log line(s) dropped: the log could"
+                    + " not keep up" : "";
             if (line.toScreen()) {
-                screen.println(text);
+                // Screen lines are log lines of the node: the level first (see server/ProcessLog).
+                if (lost > 0) {
+                    screen.println("WARN " + droppedText);
+                }
+                screen.println("INFO " + line.text());
             }
+            String text = (lost > 0 ? droppedText + System.lineSeparator() : "") + line.text();
             if (line.toFile() != null) {
                 write(line.toFile(), text + System.lineSeparator());
             }
@@ -155,7 +161,7 @@ public final class DirectiveLog {
             }
         } catch (IOException e) {
             if (channel.isOpen() && file.compareAndSet(channel, null)) {
-                screen.println("directive log file failed, closing it: " + e);
+                screen.println("WARN directive log file failed, closing it: " + e);
                 close(channel);
             }
         }
@@ -168,7 +174,7 @@ public final class DirectiveLog {
         try {
             channel.close();
         } catch (IOException e) {
-            screen.println("closing the directive log file failed: " + e);
+            screen.println("WARN closing the directive log file failed: " + e);
         }
     }
 

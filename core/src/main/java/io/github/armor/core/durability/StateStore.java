@@ -93,18 +93,24 @@ public final class StateStore {
 
     /**
      * Holds the state directory for this process's lifetime: two cores replaying and writing the
-     * same journals would corrupt them. A predecessor that is still dying gets a few seconds.
+     * same journals would corrupt them. The lock file names the node holding it. A predecessor
+     * core of this same node that is still dying gets a few seconds; another live node gets none.
      */
     private void lockStateDirectory() throws IOException {
         Files.createDirectories(durability.stateDir());
         FileChannel channel = FileChannel.open(durability.stateDir().resolve("lock"), StandardOpenOption.CREATE,
-                StandardOpenOption.WRITE);
+                StandardOpenOption.READ, StandardOpenOption.WRITE);
+        long node = ProcessHandle.current().parent().map(ProcessHandle::pid).orElse(-1L);
         long deadline = System.nanoTime() + LOCK_WAIT_NANOS;
         while ((stateLock = channel.tryLock()) == null) {
-            if (System.nanoTime() > deadline) {
+            long holder = holderNode(channel);
+            boolean otherLiveNode = holder > 0 && holder != node
+                    && ProcessHandle.of(holder).map(ProcessHandle::isAlive).orElse(false);
+            if (otherLiveNode || System.nanoTime() > deadline) {
                 channel.close();
-                throw new IllegalStateException("state directory " + durability.stateDir()
-                        + " is in use by another ARMOR core; give each node its own state_dir");
+                throw new StateDirectoryInUse("state directory " + durability.stateDir() + " is in use by another"
+                        + " ARMOR node" + (holder > 0 ? " (pid " + holder + ")" : "")
+                        + "; give each node its own state_dir");
             }
             try {
                 Thread.sleep(100);
@@ -112,6 +118,28 @@ public final class StateStore {
                 Thread.currentThread().interrupt();
                 throw new IOException("interrupted while waiting for the state directory", e);
             }
+        }
+        channel.truncate(0);
+        channel.write(java.nio.ByteBuffer.wrap(("node " + node + " core " + ProcessHandle.current().pid() + "\n")
+                .getBytes(StandardCharsets.US_ASCII)), 0);
+    }
+
+    /** The pid of the node named in a lock file, or -1. */
+    private static long holderNode(FileChannel channel) {
+        try {
+            java.nio.ByteBuffer text = java.nio.ByteBuffer.allocate(100);
+            channel.read(text, 0);
+            String[] words = new String(text.array(), 0, text.position(), StandardCharsets.US_ASCII).trim().split(" ");
+            return words.length >= 2 && words[0].equals("node") ? Long.parseLong(words[1]) : -1;
+        } catch (IOException | NumberFormatException e) {
+            return -1;
+        }
+    }
+
+    /** Another ARMOR node holds the state directory. */
+    public static final class StateDirectoryInUse extends IllegalStateException {
+        StateDirectoryInUse(String message) {
+            super(message);
         }
     }
 

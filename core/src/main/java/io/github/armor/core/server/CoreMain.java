@@ -20,7 +20,11 @@ import java.util.List;
 public final class CoreMain {
     private CoreMain() {}
 
+    /** The line on stdout that tells the node why the core could not start (instead of the ready line). */
+    static final String CANNOT_START = "ARMOR core cannot start: ";
+
     public static void main(String[] args) throws IOException {
+        ProcessLog.install();
         if (args.length != 2) {
             System.err.println("usage: java -jar armor-core.jar SOCKET_PATH CONFIG_JSON");
             System.exit(2);
@@ -40,7 +44,15 @@ public final class CoreMain {
         watchParent.setDaemon(true);
         watchParent.start();
         ArmorCore core = new ArmorCore(config);
-        core.restoreState();
+        try {
+            core.restoreState();
+        } catch (RuntimeException e) {
+            // One line the node reports as the reason; the trace only for those who asked for DEBUG.
+            System.out.println(CANNOT_START + e.getMessage());
+            System.out.flush();
+            org.slf4j.LoggerFactory.getLogger(CoreMain.class).debug("start failed", e);
+            System.exit(3);
+        }
         new CoreServer(core).serve(Path.of(args[0]), () -> {
             System.out.println("ARMOR core ready on " + args[0]);
             System.out.flush();

@@ -8,12 +8,13 @@ Without owlready2 (make bench installs it, make setup does not) its rows say so.
 
 import os
 import pathlib
-import random
 import re
 import subprocess
 import sys
 
-REPO = pathlib.Path(__file__).resolve().parents[1]
+from conftest import release_domain, reserve_domain
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
 SECTIONS = ('## Summary', '## Machine and versions', '## 1. Transport overhead',
             '## 2. Batch throughput', '## 3. Reasoning under updates', '## 4. Memory',
             '## 5. Profile')
@@ -29,11 +30,14 @@ def _sections(report: str) -> dict:
 
 def test_smoke_run_writes_every_section_with_figures(tmp_path):
     report_path = tmp_path / 'REPORT.md'
-    # A DDS domain of its own, so that the suite's nodes never meet another run's.
-    env = {**os.environ, 'ROS_DOMAIN_ID': str(random.SystemRandom().randint(1, 100))}
+    # A DDS domain of its own (reserved as the session's is), so that the suite's nodes never
+    # meet this run's nodes, another run's or a user's.
+    domain = reserve_domain()
+    env = {**os.environ, 'ROS_DOMAIN_ID': domain}
     completed = subprocess.run(
         [sys.executable, str(REPO / 'bench' / 'suite.py'), '--scale', 'smoke', '--report',
          str(report_path)], env=env, capture_output=True, text=True, timeout=600)
+    release_domain(domain)
     assert completed.returncode == 0, completed.stderr[-4000:]
     report = report_path.read_text()
     for heading in SECTIONS:
