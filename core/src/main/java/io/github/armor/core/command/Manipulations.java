@@ -73,14 +73,14 @@ final class Manipulations {
         table.command("REMOVE CLASS").args("class").manipulation(c -> c.change(removeEntity(c.reference(),
                 c.owlClass(0))));
         table.command("REPLACE DATAPROP IND").args("prop", "ind", "type", "new value", "old value")
-                .manipulation(c -> {
-                    OWLDataFactory f = c.factory();
-                    List<OWLOntologyChange> changes = new ArrayList<>(removes(c, List.of(f.getOWLDataPropertyAssertionAxiom(
-                            c.dataProperty(0), c.individual(1), c.literal(2, 4)))));
-                    changes.addAll(adds(c, List.of(f.getOWLDataPropertyAssertionAxiom(c.dataProperty(0),
-                            c.individual(1), c.literal(2, 3)))));
-                    return c.change(changes);
-                });
+                .manipulation(Manipulations::replaceDataValue);
+        table.command("ADD DATAPROP IND").args("prop", "ind", "type", "value").manipulation(c -> c.change(adds(c,
+                List.of(c.factory().getOWLDataPropertyAssertionAxiom(c.dataProperty(0), c.individual(1),
+                        c.literal(2, 3))))));
+        table.command("REMOVE DATAPROP IND").args("prop", "ind", "type", "value").manipulation(c -> c.change(
+                removes(c, List.of(c.factory().getOWLDataPropertyAssertionAxiom(c.dataProperty(0), c.individual(1),
+                        Literals.stored(c.reference().ontology(), c.dataProperty(0), c.individual(1),
+                                c.literal(2, 3)))))));
         table.command("REPLACE OBJECTPROP IND").args("prop", "ind", "new value", "old value")
                 .manipulation(c -> {
                     OWLDataFactory f = c.factory();
@@ -99,9 +99,6 @@ final class Manipulations {
                 c -> List.of(c.factory().getOWLClassAssertionAxiom(c.owlClass(1), c.individual(0))));
         pair(table, "CLASS CLASS", new String[] {"sub", "super"}, false,
                 c -> List.of(c.factory().getOWLSubClassOfAxiom(c.owlClass(0), c.owlClass(1))));
-        pair(table, "DATAPROP IND", new String[] {"prop", "ind", "type", "value"}, false,
-                c -> List.of(c.factory().getOWLDataPropertyAssertionAxiom(c.dataProperty(0), c.individual(1),
-                        c.literal(2, 3))));
         pair(table, "OBJECTPROP IND", new String[] {"prop", "ind", "value ind"}, false,
                 c -> List.of(c.factory().getOWLObjectPropertyAssertionAxiom(c.objectProperty(0), c.individual(1),
                         c.individual(2))));
@@ -190,6 +187,36 @@ final class Manipulations {
     }
 
 
+
+    /**
+     * Removes the stored value the old value means (see {@link Literals#stored}) and adds the new
+     * one. An old value that matches nothing stored removes nothing, as in ARMOR; when the
+     * individual keeps other values the answer says so, since the property now has several.
+     */
+    private static io.github.armor.core.api.Response replaceDataValue(CommandContext c) {
+        OWLDataFactory f = c.factory();
+        OWLDataProperty property = c.dataProperty(0);
+        OWLNamedIndividual individual = c.individual(1);
+        org.semanticweb.owlapi.model.OWLLiteral given = c.literal(2, 4);
+        org.semanticweb.owlapi.model.OWLLiteral old = Literals.stored(c.reference().ontology(), property, individual,
+                given);
+        org.semanticweb.owlapi.model.OWLLiteral added = c.literal(2, 3);
+        List<org.semanticweb.owlapi.model.OWLLiteral> before = Literals.values(c.reference().ontology(), property,
+                individual);
+        List<OWLOntologyChange> changes = new ArrayList<>(removes(c, List.of(
+                f.getOWLDataPropertyAssertionAxiom(property, individual, old))));
+        changes.addAll(adds(c, List.of(f.getOWLDataPropertyAssertionAxiom(property, individual, added))));
+        io.github.armor.core.api.Response response = c.change(changes);
+        List<org.semanticweb.owlapi.model.OWLLiteral> kept = before.stream()
+                .filter(v -> !v.equals(old) && !v.equals(added)).toList();
+        if (!before.contains(old) && !kept.isEmpty()) {
+            return response.withDescription("old value " + Rendering.literal(given) + " was not stored, nothing"
+                    + " removed; " + property.getIRI().getShortForm() + " of " + individual.getIRI().getShortForm()
+                    + " keeps " + kept.stream().map(Rendering::literal).collect(Collectors.joining(", "))
+                    + " beside " + Rendering.literal(added));
+        }
+        return response;
+    }
 
     private static List<OWLOntologyChange> makeEquivalentChanges(CommandContext c) {
         Reference reference = c.reference();
