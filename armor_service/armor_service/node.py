@@ -170,7 +170,7 @@ class ArmorService(Node):
     def _declare_parameters(self) -> None:
         home = os.path.expanduser('~')
         defaults = {
-            'default_reasoner': ('HERMIT', 'reasoner used when LOAD or CREATE names none'),
+            'default_reasoner': ('PELLET', 'reasoner used when LOAD or CREATE names none'),
             'full_entity_iri': (True, 'answer <full IRIs> (true) or short names (false)'),
             'allowed_dirs': ([os.getcwd(), home, tempfile.gettempdir()],
                              'LOAD FILE, SAVE and LOG FILE paths must lie inside these'),

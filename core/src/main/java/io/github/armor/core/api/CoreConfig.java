@@ -64,11 +64,11 @@ public record CoreConfig(
     public CoreConfig {
         allowedDirs = List.copyOf(allowedDirs);
         safeguards = safeguards == null ? Safeguards.DEFAULT : safeguards;
-        defaultReasoner = defaultReasoner == null || defaultReasoner.isBlank() ? "HERMIT" : defaultReasoner;
+        defaultReasoner = defaultReasoner == null || defaultReasoner.isBlank() ? "PELLET" : defaultReasoner;
     }
 
-    /** Settings for tests and embedding: full IRIs, HermiT, the given directories, generous waits. */
+    /** Settings for tests and embedding: full IRIs, Openllet, the given directories, generous waits. */
     public static CoreConfig defaults(Path... allowedDirs) {
-        return new CoreConfig(true, "HERMIT", List.of(allowedDirs), false, 30_000, 0, 0, Durability.NONE);
+        return new CoreConfig(true, "PELLET", List.of(allowedDirs), false, 30_000, 0, 0, Durability.NONE);
     }
 }

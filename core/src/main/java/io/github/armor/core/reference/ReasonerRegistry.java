@@ -3,11 +3,20 @@ package io.github.armor.core.reference;
 
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 import openllet.owlapi.OpenlletReasonerFactory;
 import org.semanticweb.elk.owlapi.ElkReasonerFactory;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.reasoner.OWLReasoner;
+import org.semanticweb.owlapi.reasoner.SimpleConfiguration;
 import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
 import uk.ac.manchester.cs.jfact.JFactFactory;
 
@@ -20,7 +29,62 @@ public final class ReasonerRegistry {
             "JFACT", JFactFactory::new,
             "ELK", ElkReasonerFactory::new);
 
+    // Complete OWL 2 DL reasoners, the most capable first (Openllet also applies SWRL built-ins).
+    // ELK is never proposed: it accepts almost anything by ignoring what is not EL.
+    private static final List<String> ALTERNATIVES = List.of("PELLET", "HERMIT", "JFACT");
+    private static final long TRIAL_MS = 10_000;
+    private static final ScheduledExecutorService TRIAL_ALARM = Executors.newSingleThreadScheduledExecutor(r -> {
+        Thread thread = new Thread(r, "armor-reasoner-trial-limit");
+        thread.setDaemon(true);
+        return thread;
+    });
+
     private ReasonerRegistry() {}
+
+    /**
+     * What to add to a refusal by {@code refused}: the first other complete reasoner that starts
+     * on the ontology and checks its consistency within a few seconds, tried for real, so the
+     * name given is one that accepts it. Runs only when a reasoner refused, never on success.
+     */
+    public static String acceptingAlternative(String refused, OWLOntology ontology) {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(TRIAL_MS);
+        for (String candidate : ALTERNATIVES) {
+            long left = TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime());
+            if (candidate.equalsIgnoreCase(refused) || left <= 0) {
+                continue;
+            }
+            if (accepts(candidate, ontology, left)) {
+                return "; " + candidate + " accepts this ontology (name it as the reasoner argument of LOAD, or set"
+                        + " the node's default_reasoner)";
+            }
+        }
+        return "; no other reasoner here accepted it within " + TRIAL_MS / 1000 + " s either";
+    }
+
+    private static boolean accepts(String candidate, OWLOntology ontology, long timeLimitMs) {
+        Optional<OWLReasoner> reasoner = Optional.empty();
+        ScheduledFuture<?> alarm = null;
+        try {
+            reasoner = Optional.of(factory(candidate).createReasoner(ontology, new SimpleConfiguration(timeLimitMs)));
+            OWLReasoner started = reasoner.get();
+            alarm = TRIAL_ALARM.schedule(started::interrupt, timeLimitMs, TimeUnit.MILLISECONDS);
+            started.isConsistent();
+            return true;
+        } catch (RuntimeException | LinkageError e) {
+            return false;
+        } finally {
+            if (alarm != null) {
+                alarm.cancel(false);
+            }
+            reasoner.ifPresent(r -> {
+                try {
+                    r.dispose();
+                } catch (RuntimeException e) {
+                    // a trial reasoner that fails to dispose is dropped all the same
+                }
+            });
+        }
+    }
 
     /**
      * The canonical name of a reasoner: one of the known names upper-cased, or the class name as given.

@@ -255,7 +255,7 @@ public final class Reference {
             throw overran(e);
         } catch (UnsupportedOperationException e) {
             throw new ArmorException(ExitCode.NOT_SUPPORTED, reasonerName + " does not support this: "
-                    + e.getMessage(), e);
+                    + e.getMessage() + "; a complete OWL 2 DL reasoner (PELLET, HERMIT) answers it", e);
         } catch (ArmorException e) {
             throw e;
         } catch (RuntimeException e) {
@@ -389,7 +389,7 @@ public final class Reference {
             // An unsupported construct makes some reasoners fail on isConsistent; other
             // directives on the reference must stay usable, so only the answer says so.
             throw new ArmorException(ExitCode.REASONER_FAILED, reasonerName + " could not check consistency of '"
-                    + name + "': " + e, e);
+                    + name + "': " + e + ReasonerRegistry.acceptingAlternative(reasonerName, ontology), e);
         }
     }
 
@@ -411,7 +411,7 @@ public final class Reference {
             throw e;
         } catch (RuntimeException | LinkageError e) {
             throw new ArmorException(ExitCode.REASONER_FAILED, reasonerName + " could not start on reference '"
-                    + name + "': " + e, e);
+                    + name + "': " + e + ReasonerRegistry.acceptingAlternative(reasonerName, ontology), e);
         }
     }
 

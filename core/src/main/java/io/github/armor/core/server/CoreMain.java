@@ -65,7 +65,7 @@ public final class CoreMain {
         allowed.forEach(d -> dirs.add(Path.of(d.getAsString())));
         return new CoreConfig(
                 !json.has("full_entity_iri") || json.get("full_entity_iri").getAsBoolean(),
-                json.has("default_reasoner") ? json.get("default_reasoner").getAsString() : "HERMIT",
+                json.has("default_reasoner") ? json.get("default_reasoner").getAsString() : "PELLET",
                 dirs,
                 json.has("web_loading") && json.get("web_loading").getAsBoolean(),
                 json.has("lock_wait_ms") ? json.get("lock_wait_ms").getAsLong() : 30_000,
