@@ -9,6 +9,7 @@ import io.github.armor.core.api.Response;
 import io.github.armor.core.api.SizeLimits;
 import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.command.CommandSpec;
+import io.github.armor.core.command.CommandSuggestions;
 import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.command.DirectiveLog;
 import io.github.armor.core.command.Rendering;
@@ -224,7 +225,8 @@ public final class ArmorCore implements AutoCloseable {
         }
         if (spec == null) {
             throw new ArmorException(ExitCode.UNKNOWN_COMMAND, "unknown command '" + directive.describe()
-                    + "' (read as " + directive.key() + ")");
+                    + "' (read as " + directive.key() + "); closest: " + String.join("; ",
+                    CommandSuggestions.closest(commands.all(), directive.key(), directive.args().size())));
         }
         spec.checkArity(directive.args().size());
         return switch (spec.target()) {

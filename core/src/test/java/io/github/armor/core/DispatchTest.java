@@ -36,6 +36,21 @@ class DispatchTest {
         assertTrue(f.core.execute(Directive.of("c", "", "GET", "ALL", "REFS")).success());
     }
 
+    /** Issue 11 item 6: a misspelt combination answers 205 with the combinations meant. */
+    @Test
+    void aMisspeltCombinationAnswers205WithTheClosestOnes() {
+        CoreFixture f = fixture();
+        f.loadRobotics("map", "HERMIT", false);
+        String spec = f.run("map", "QUERY IND CLASSS", "Room").errorDescription();
+        assertFails(f.run("map", "QUERY IND CLASSS", "Room"), 205);
+        assertTrue(spec.contains("closest: QUERY IND CLASS (class)"), spec);
+        String command = f.run("map", "REPLACE DATAPROP", "batteryLevel", "robot1", "INT", "60", "80")
+                .errorDescription();
+        assertTrue(command.contains("closest: REPLACE DATAPROP IND (prop, ind, type, new value, old value)"), command);
+        String objects = f.run("map", "QURY OBJECTPROP IND", "isIn", "robot1").errorDescription();
+        assertTrue(objects.contains("closest: QUERY OBJECTPROP IND (prop, ind)"), objects);
+    }
+
     @Test
     void badArgumentsAreRefusedWithoutChangingAnything() {
         CoreFixture f = fixture();
