@@ -36,7 +36,7 @@ _CORE_SETTINGS = ('full_entity_iri', 'default_reasoner', 'allowed_dirs', 'web_lo
                   'lock_wait_ms', 'reasoner_timeout_ms', 'mount_lease_s', 'state_dir',
                   'restore_state', 'journal_fsync', 'checkpoint_every_changes',
                   'checkpoint_every_s', 'sparql_timeout_ms', 'sparql_federated',
-                  'ignore_missing_imports')
+                  'ignore_missing_imports', 'strict_names')
 
 
 class ArmorService(Node):
@@ -192,6 +192,8 @@ class ArmorService(Node):
                                  '(opens network connections)'),
             'ignore_missing_imports': (False, 'load an ontology whose owl:imports cannot be resolved, '
                                        'listing them in error_description (default: refuse, 222)'),
+            'strict_names': (False, 'a QUERY naming an entity the reference does not know answers '
+                             '224 instead of an empty list (other commands create it, as in ARMOR)'),
             'core_start_timeout_s': (600.0, 'longest wait for the core to start and restore'),
             'request_timeout_s': (0.0, 'longest wait for the core per request (0 = none)'),
             'core_jar': ('', 'path of armor-core.jar (default: $ARMOR_CORE_JAR)'),

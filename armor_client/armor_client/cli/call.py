@@ -62,6 +62,9 @@ def print_response(response, as_json: bool = False) -> None:
         return
     if not response.success:
         print(f'error {response.exit_code}: {response.error_description}', file=sys.stderr)
+    elif response.error_description:
+        # What a success says: names new to the reference (a typo?), a value that was not stored.
+        print(f'note: {response.error_description}', file=sys.stderr)
     flags = []
     if response.success:
         flags.append('consistent' if response.is_consistent else 'INCONSISTENT')

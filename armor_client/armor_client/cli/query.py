@@ -14,6 +14,7 @@ Exit status: 0 answered, 1 the query failed, 2 no service.
 """
 
 import argparse
+import sys
 
 from armor_client import commands
 from armor_client.cli.call import print_response
@@ -66,5 +67,8 @@ def run(args: argparse.Namespace) -> int:
         return 0 if response.success else 1
     if not response.success:
         raise error_for(response)
+    if response.error_description:
+        # A name new to the reference answers an empty list: likely a typo, say so.
+        print(f'note: {response.error_description}', file=sys.stderr)
     print_answer(response, primary, secondary, args.iri)
     return 0

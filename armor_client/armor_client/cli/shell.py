@@ -158,6 +158,13 @@ class Shell:
         if len(words) != 1:
             print('use REF', file=self.out)
             return
+        loaded = self.armor.references()
+        if words[0] not in loaded:
+            # Now, not at the next directive: a typo in the name would only show up later as 206.
+            print(f'error: no reference named {words[0]!r} is loaded (loaded: '
+                  f'{", ".join(loaded) or "none"}); still using {self.reference or "none"}',
+                  file=self.out)
+            return
         self.reference = words[0]
         self._names = None
 
@@ -178,9 +185,16 @@ class Shell:
         if command is None:
             print(f'unknown command: {" ".join(words[:3])} (try help)', file=self.out)
             return
-        response = self.armor.call(self.reference, *command.words, arguments)
+        words = command.words
+        if words == ('QUERY', 'SPARQL', ''):
+            # Rows as variable/value pairs, so that the table's columns carry the query's names.
+            words = ('QUERY', 'SPARQL', 'FORMATTED')
+        response = self.armor.call(self.reference, *words, arguments)
         if not response.success:
             raise error_for(response)
+        if response.error_description:
+            # A success that says something: a name new to the reference (a typo?), a value not found.
+            print(f'note: {response.error_description}', file=self.out)
         if command.kind == commands.QUERY:
             print_answer(response, command.words[1], command.words[2], self.iris, self.out)
         elif response.queried_objects:
@@ -234,8 +248,10 @@ def _interactive(shell: Shell) -> None:
 
     def complete(text: str, state: int) -> Optional[str]:
         if state == 0:
-            matches[:] = shell.completer.candidates(readline.get_line_buffer()[
-                :readline.get_endidx()])
+            # Python's readline appends nothing to a completed word: the space is added here, so
+            # that a unique match is followed by a space, as in other shells.
+            matches[:] = [m + ' ' for m in shell.completer.candidates(readline.get_line_buffer()[
+                :readline.get_endidx()])]
         return matches[state] if state < len(matches) else None
 
     readline.set_completer(complete)

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
 import java.nio.file.Files;
@@ -49,6 +50,29 @@ class DispatchTest {
         assertTrue(command.contains("closest: REPLACE DATAPROP IND (prop, ind, type, new value, old value)"), command);
         String objects = f.run("map", "QURY OBJECTPROP IND", "isIn", "robot1").errorDescription();
         assertTrue(objects.contains("closest: QUERY OBJECTPROP IND (prop, ind)"), objects);
+    }
+
+    /** Issue 11 item 7: a name new to the reference is said (with the names it is close to). */
+    @Test
+    void namesNewToTheReferenceAreSaidAndStrictNamesRefusesThemInQueries() {
+        CoreFixture f = fixture();
+        f.loadRobotics("map", "HERMIT", false);
+        Response query = f.ok("map", "QUERY IND CLASS", "Rooom");
+        assertEquals(List.of(), query.queriedObjects());
+        assertEquals("new to the reference: class 'Rooom' (did you mean Room?)", query.errorDescription());
+        Response added = f.ok("map", "ADD OBJECTPROP IND", "isIn", "alise", "kitchen");
+        assertEquals("new to the reference: individual 'alise' (did you mean alice?)", added.errorDescription());
+        assertEquals("", f.ok("map", "QUERY IND CLASS", "Room").errorDescription());
+
+        CoreFixture strict = new CoreFixture(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES), false,
+                30_000, 0, 0, CoreConfig.Durability.NONE, new CoreConfig.Safeguards(30_000, false, false, true)));
+        strict.loadRobotics("map", "HERMIT", false);
+        Response refused = strict.run("map", "QUERY IND CLASS", "Rooom");
+        assertFails(refused, 224);
+        assertTrue(refused.errorDescription().contains("class 'Rooom' (did you mean Room?)"), refused.errorDescription());
+        strict.ok("map", "ADD IND CLASS", "bob", "Person");
+        assertEquals(List.of(CoreFixture.iri("alice"), CoreFixture.iri("bob")),
+                strict.ok("map", "QUERY IND CLASS", "Person").queriedObjects());
     }
 
     @Test

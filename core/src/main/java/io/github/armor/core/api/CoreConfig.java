@@ -49,9 +49,16 @@ public record CoreConfig(
      * @param sparqlTimeoutMs      default time limit of a SPARQL query, and the most a query may ask for (0 = none)
      * @param sparqlFederated      let SPARQL SERVICE clauses query remote endpoints (opens network connections)
      * @param ignoreMissingImports load an ontology whose imports cannot be resolved, listing them in the answer
+     * @param strictNames          a QUERY naming an entity the reference does not know is an error (224),
+     *                             not an empty answer
      */
-    public record Safeguards(long sparqlTimeoutMs, boolean sparqlFederated, boolean ignoreMissingImports) {
-        public static final Safeguards DEFAULT = new Safeguards(30_000, false, false);
+    public record Safeguards(long sparqlTimeoutMs, boolean sparqlFederated, boolean ignoreMissingImports,
+                             boolean strictNames) {
+        public static final Safeguards DEFAULT = new Safeguards(30_000, false, false, false);
+
+        public Safeguards(long sparqlTimeoutMs, boolean sparqlFederated, boolean ignoreMissingImports) {
+            this(sparqlTimeoutMs, sparqlFederated, ignoreMissingImports, false);
+        }
     }
 
     /** Settings with the default safeguards. */

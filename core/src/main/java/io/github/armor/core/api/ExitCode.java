@@ -30,7 +30,8 @@ public enum ExitCode {
     INTERNAL_ERROR(220, "internal error in the knowledge core"),
     TOO_LARGE(221, "an argument, directive, list or answer exceeds its size limit"),
     IMPORTS_UNRESOLVED(222, "owl:imports that could not be resolved"),
-    FEDERATED_QUERY_DISABLED(223, "SPARQL SERVICE (federated query) is disabled");
+    FEDERATED_QUERY_DISABLED(223, "SPARQL SERVICE (federated query) is disabled"),
+    UNKNOWN_NAME(224, "a query names an entity the reference does not know (node parameter strict_names)");
 
     private final int code;
     private final String meaning;

@@ -8,12 +8,14 @@ import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
 import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLDataFactory;
 import org.semanticweb.owlapi.model.OWLDataProperty;
+import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLLiteral;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLObjectProperty;
@@ -28,6 +30,7 @@ public final class CommandContext {
     private final Rendering rendering;
     private final DirectiveLog log;
     private Supplier<Response> afterRelease;
+    private final List<String> unknownNames = new ArrayList<>();
 
     public CommandContext(Directive directive, Reference reference, ReferenceRegistry references,
                           CoreConfig config, Rendering rendering, DirectiveLog log) {
@@ -49,11 +52,21 @@ public final class CommandContext {
         return Response.ok(true, List.of());
     }
 
-    /** The directive's answer: the deferred evaluation's, if the handler left one. */
+    /**
+     * The directive's answer: the deferred evaluation's, if the handler left one. A success that
+     * named entities the reference did not know says so in its description (a typo creates an
+     * entity, as in ARMOR; the client can warn).
+     */
     public Response finishAfterRelease(Response underLock) {
         Supplier<Response> evaluation = afterRelease;
         afterRelease = null;
-        return evaluation == null ? underLock : evaluation.get();
+        Response response = evaluation == null ? underLock : evaluation.get();
+        if (!response.success() || unknownNames.isEmpty()) {
+            return response;
+        }
+        String note = "new to the reference: " + String.join(", ", unknownNames);
+        return response.withDescription(response.errorDescription().isEmpty() ? note
+                : response.errorDescription() + "; " + note);
     }
 
     public DirectiveLog log() {
@@ -97,19 +110,35 @@ public final class CommandContext {
     }
 
     public OWLNamedIndividual individual(int index) {
-        return reference.names().entity(EntityType.NAMED_INDIVIDUAL, arg(index));
+        return named(EntityType.NAMED_INDIVIDUAL, index);
     }
 
     public OWLClass owlClass(int index) {
-        return reference.names().entity(EntityType.CLASS, arg(index));
+        return named(EntityType.CLASS, index);
     }
 
     public OWLObjectProperty objectProperty(int index) {
-        return reference.names().entity(EntityType.OBJECT_PROPERTY, arg(index));
+        return named(EntityType.OBJECT_PROPERTY, index);
     }
 
     public OWLDataProperty dataProperty(int index) {
-        return reference.names().entity(EntityType.DATA_PROPERTY, arg(index));
+        return named(EntityType.DATA_PROPERTY, index);
+    }
+
+    /** The entity an argument names; an unknown one is noted, or refused in a query under strict_names. */
+    private <E extends OWLEntity> E named(EntityType<E> type, int index) {
+        E entity = reference.names().entity(type, arg(index));
+        if (!reference.names().knows(entity)) {
+            String unknown = reference.names().describeUnknown(type, arg(index));
+            if (config.safeguards().strictNames() && directive.command().equalsIgnoreCase("QUERY")) {
+                throw new ArmorException(ExitCode.UNKNOWN_NAME, "reference '" + reference.name()
+                        + "' does not know the " + unknown + " (strict_names is on)");
+            }
+            if (!unknownNames.contains(unknown)) {
+                unknownNames.add(unknown);
+            }
+        }
+        return entity;
     }
 
     /** A literal from a (type, value) argument pair. */

@@ -109,6 +109,51 @@ public final class EntityResolver {
         return inDefault;
     }
 
+    /**
+     * Whether the reference knows the entity (built-ins always count as known): referring to an
+     * unknown one creates it (ARMOR's rule), which a typo does silently.
+     */
+    public boolean knows(OWLEntity entity) {
+        return entity.isBuiltIn() || ontology.containsEntityInSignature(entity, Imports.INCLUDED);
+    }
+
+    /** "individual 'alise' (did you mean alice?)": an unknown name and the known ones closest to it. */
+    public String describeUnknown(EntityType<?> type, String argument) {
+        String name = argument.trim();
+        int cut = Math.max(name.lastIndexOf('#'), Math.max(name.lastIndexOf('/'), name.lastIndexOf(':')));
+        String shortName = name.substring(cut + 1).replace(">", "");
+        int limit = Math.max(1, Math.min(3, shortName.length() / 3));
+        List<String> close = ontology.signature(Imports.INCLUDED).filter(e -> e.getEntityType() == type)
+                .map(e -> e.getIRI().getShortForm()).distinct()
+                .filter(known -> Math.abs(known.length() - shortName.length()) <= limit)
+                .map(known -> Map.entry(known, editDistance(known.toLowerCase(java.util.Locale.ROOT),
+                        shortName.toLowerCase(java.util.Locale.ROOT))))
+                .filter(scored -> scored.getValue() <= limit)
+                .sorted(Map.Entry.<String, Integer>comparingByValue().thenComparing(Map.Entry.comparingByKey()))
+                .limit(3).map(Map.Entry::getKey).toList();
+        return kind(type) + " '" + name + "'" + (close.isEmpty() ? "" : " (did you mean " + String.join(", ", close)
+                + "?)");
+    }
+
+    private static int editDistance(String a, String b) {
+        int[] previous = new int[b.length() + 1];
+        int[] current = new int[b.length() + 1];
+        for (int j = 0; j <= b.length(); j++) {
+            previous[j] = j;
+        }
+        for (int i = 1; i <= a.length(); i++) {
+            current[0] = i;
+            for (int j = 1; j <= b.length(); j++) {
+                current[j] = Math.min(previous[j - 1] + (a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1),
+                        Math.min(previous[j], current[j - 1]) + 1);
+            }
+            int[] swap = previous;
+            previous = current;
+            current = swap;
+        }
+        return previous[b.length()];
+    }
+
     private static IRI absoluteIri(String text, String argument) {
         if (!ABSOLUTE_IRI.matcher(text).matches()) {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "'" + argument + "' is not a valid absolute IRI");

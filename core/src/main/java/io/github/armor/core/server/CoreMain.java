@@ -75,7 +75,8 @@ public final class CoreMain {
                 new CoreConfig.Safeguards(
                         json.has("sparql_timeout_ms") ? json.get("sparql_timeout_ms").getAsLong() : 30_000,
                         json.has("sparql_federated") && json.get("sparql_federated").getAsBoolean(),
-                        json.has("ignore_missing_imports") && json.get("ignore_missing_imports").getAsBoolean()));
+                        json.has("ignore_missing_imports") && json.get("ignore_missing_imports").getAsBoolean(),
+                        json.has("strict_names") && json.get("strict_names").getAsBoolean()));
     }
 
     private static CoreConfig.Durability durability(JsonObject json) {
