@@ -68,9 +68,21 @@ def release_domain(domain: str) -> None:
 
 
 _DOMAIN_LOCKS = {}
-# Chosen before rclpy starts, always: a ROS_DOMAIN_ID the user exported for their own node
-# (make run) is the one domain the tests must stay out of.
-os.environ['ROS_DOMAIN_ID'] = reserve_domain()
+# Chosen before rclpy starts: a ROS_DOMAIN_ID the user exported for their own node (make run)
+# is the one domain the tests must stay out of. Only a process this run started itself (a
+# client script of a load test) keeps the domain it inherited: ARMOR_TEST_DOMAIN marks it.
+_inherited = os.environ.get('ROS_DOMAIN_ID')
+if not _inherited or os.environ.get('ARMOR_TEST_DOMAIN') != _inherited:
+    os.environ['ROS_DOMAIN_ID'] = os.environ['ARMOR_TEST_DOMAIN'] = reserve_domain()
+# armor call's relays started by tests end soon after the run (and at its end, below).
+os.environ['ARMOR_CALL_RELAY_IDLE_S'] = '60'
+
+
+@pytest.fixture(scope='session', autouse=True)
+def _stop_call_relay():
+    yield
+    from armor_client.cli import call_relay
+    call_relay.stop()
 
 
 def iri(name: str) -> str:

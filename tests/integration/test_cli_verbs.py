@@ -67,8 +67,12 @@ def test_shell_runs_a_script_from_stdin(armor):
     lines = shell.stdout.splitlines()
     assert lines[0].split()[:3] == ['QUERY', 'IND', 'CLASS']
     assert lines[1:5] == ['individual', '----------', 'kitchen', '(1 row)']
-    assert lines[5:7] == ['ok (consistent)', 'ok (consistent)']
-    assert lines[7:12] == ['individual', '----------', 'bedroom', 'kitchen', '(2 rows)']
-    assert lines[12] == 'ok (consistent)' and lines[13].endswith(' names')
-    assert lines[14].startswith('error 206:')
-    assert lines[15] == 'unknown command: FLY AWAY (try help)' and len(lines) == 16
+    # carol is new to the reference: said once, when she first appears (issue 11 item 7).
+    assert lines[5:8] == ["note: new to the reference: individual 'carol'", 'ok (consistent)',
+                          'ok (consistent)']
+    assert lines[8:13] == ['individual', '----------', 'bedroom', 'kitchen', '(2 rows)']
+    assert lines[13] == 'ok (consistent)' and lines[14].endswith(' names')
+    # use of a reference that is not loaded fails at once and keeps the current one (item 13).
+    assert lines[15].startswith("error: no reference named 'nowhere' is loaded")
+    assert lines[16:21] == ['individual', '----------', 'bedroom', 'kitchen', '(2 rows)']
+    assert lines[21] == 'unknown command: FLY AWAY (try help)' and len(lines) == 22

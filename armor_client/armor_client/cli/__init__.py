@@ -9,12 +9,13 @@ import sys
 VERBS = ('serve', 'call', 'load', 'query', 'sparql', 'save', 'refs', 'shell')
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(only: str = '') -> argparse.ArgumentParser:
+    """The parser of every verb, or only of verb `only` (its module alone is imported)."""
     parser = argparse.ArgumentParser(
         prog='armor', description='ARMOR for ROS 2: OWL ontologies with reasoners, as a ROS 2 '
         'service. Run "armor VERB --help" for the details of a verb.')
     verbs = parser.add_subparsers(dest='verb', metavar='VERB', required=True)
-    for name in VERBS:
+    for name in ([only] if only in VERBS else VERBS):
         module = importlib.import_module(f'armor_client.cli.{name}')
         summary = module.__doc__.strip().splitlines()[0]
         sub = verbs.add_parser(name, help=summary, description=module.__doc__.strip(),
@@ -33,7 +34,8 @@ def main(argv=None) -> int:
     if marker in argv:
         split = argv.index(marker)
         argv, trailing = argv[:split], argv[split + (marker == '--'):]
-    args = build_parser().parse_args(argv)
+    # Only the verb's own module: the others import rclpy, which a relayed call never needs.
+    args = build_parser(argv[0] if argv and argv[0] in VERBS else '').parse_args(argv)
     args.directive_args = trailing
     try:
         return args.run(args)
