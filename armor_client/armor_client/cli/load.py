@@ -12,6 +12,9 @@ Exit status: 0 loaded, 1 refused, 2 no service.
 
 import argparse
 import os
+import sys
+import threading
+import time
 
 from armor_client.cli.common import add_connection_arguments, connect, reporting_errors
 
@@ -51,11 +54,60 @@ def run(args: argparse.Namespace) -> int:
     options = dict(reasoner=args.reasoner, buffered_manipulation=args.buffered_manipulation,
                    buffered_reasoner=args.buffered_reasoner, mount=args.mount)
     with connect(args) as armor:
-        if args.web:
-            reference = armor.load_web(args.reference, args.source, args.iri, **options)
-        else:
-            source = os.path.abspath(args.source)
-            reference = armor.load_file(args.reference, source, args.iri, **options)
+        bar = _ProgressBar(armor, args.reference) if sys.stderr.isatty() else None
+        try:
+            if args.web:
+                reference = armor.load_web(args.reference, args.source, args.iri, **options)
+            else:
+                source = os.path.abspath(args.source)
+                reference = armor.load_file(args.reference, source, args.iri, **options)
+        finally:
+            if bar:
+                bar.stop()
     state = 'consistent' if reference.consistent else 'INCONSISTENT'
     print(f'loaded {args.source} as {args.reference} ({state})')
     return 0
+
+
+class _ProgressBar:
+    """Draws the LOAD's progress on the terminal while it runs (GET LOAD PROGRESS, twice a second)."""
+
+    WIDTH = 30
+
+    def __init__(self, armor, reference: str):
+        self._armor = armor
+        self._reference = reference
+        self._done = threading.Event()
+        self._drawn = False
+        self._thread = threading.Thread(target=self._draw, daemon=True)
+        self._thread.start()
+
+    def stop(self) -> None:
+        self._done.set()
+        self._thread.join()
+        if self._drawn:
+            sys.stderr.write('\r' + ' ' * 79 + '\r')
+            sys.stderr.flush()
+
+    def _draw(self) -> None:
+        started = time.monotonic()
+        while not self._done.wait(0.5):
+            try:
+                lines = self._armor.call('', 'GET', 'LOAD', 'PROGRESS', []).queried_objects
+            except Exception:  # a progress bar never fails the load it shows
+                continue
+            mine = [line.split() for line in lines if line.split()[0] == self._reference]
+            if not mine or self._done.is_set():
+                continue
+            _, phase, done, total = mine[0][:4]
+            elapsed = time.monotonic() - started
+            if phase == 'reading' and int(total) > 0:
+                share = min(1.0, int(done) / int(total))
+                filled = int(share * self.WIDTH)
+                text = (f'loading {self._reference}: [{"#" * filled}{"-" * (self.WIDTH - filled)}] '
+                        f'{share:4.0%} {int(done) / 1e6:.1f}/{int(total) / 1e6:.1f} MB {elapsed:.0f} s')
+            else:
+                text = f'loading {self._reference}: {phase.replace("-", " ")}... {elapsed:.0f} s'
+            sys.stderr.write('\r' + text[:79].ljust(79))
+            sys.stderr.flush()
+            self._drawn = True

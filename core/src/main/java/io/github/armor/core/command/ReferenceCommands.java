@@ -4,6 +4,7 @@ package io.github.armor.core.command;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
+import io.github.armor.core.reference.LoadProgress;
 import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.ReasonerRegistry;
 import io.github.armor.core.reference.Reference;
@@ -38,6 +39,8 @@ final class ReferenceCommands {
         table.command("MOUNT").onReference(ReferenceCommands::mount);
         table.command("UNMOUNT").onReference(ReferenceCommands::unmount);
         table.command("GET ALL REFS").global(c -> Response.ok(true, c.references().names()));
+        // One line per LOAD in flight: reference, phase, bytes read, bytes in all, elapsed ms.
+        table.command("GET LOAD PROGRESS").global(c -> Response.ok(true, LoadProgress.running()));
         table.command("GET REF CLIENT").optional("reference name").global(c -> {
             String name = c.hasArg(0) ? c.arg(0) : c.directive().referenceName();
             String holder = c.references().get(name).mountedBy();
@@ -88,9 +91,13 @@ final class ReferenceCommands {
                 bufferedReasoner);
         StringBuilder warnings = new StringBuilder();
         Reference reference = c.references().createOrReuse(name, source, () -> {
-            OntologyFiles.Loaded loaded = reader.apply(source);
-            warnings.append(loaded.warnings());
-            return Reference.open(name, loaded.ontology(), settings, c.config().reasonerTimeoutMs());
+            try (LoadProgress progress = LoadProgress.start(name, source)) {
+                OntologyFiles.Loaded loaded = reader.apply(source);
+                warnings.append(loaded.warnings());
+                progress.parsed(loaded.ontology().getAxiomCount(),
+                        loaded.ontology().getIndividualsInSignature().size(), reasoner);
+                return Reference.open(name, loaded.ontology(), settings, c.config().reasonerTimeoutMs());
+            }
         });
         if (mount) {
             takeMount(reference, client);

@@ -101,7 +101,7 @@ public final class OntologyFiles {
                     ? "'" + clientPath + "' is not a regular file" : "no such file: '" + clientPath + "'");
         }
         ImportResolver imports = new ImportResolver(allowed, config.webLoading(), path.getParent());
-        OWLOntology ontology = load(newManager(imports), new FileDocumentSource(path.toFile()), clientPath,
+        OWLOntology ontology = load(newManager(imports), LoadProgress.counted(path.toFile()), clientPath,
                 () -> OntologyHeaders.likelySyntax(path));
         return new Loaded(ontology, imports.verdict(clientPath, config.safeguards().ignoreMissingImports()));
     }
