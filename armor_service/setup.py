@@ -5,11 +5,13 @@ package_name = 'armor_service'
 
 setup(
     name=package_name,
-    version='0.1.0',
+    version='0.2.0',
     packages=find_packages(exclude=['test']),
     data_files=[
         ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
         ('share/' + package_name, ['package.xml']),
+        ('share/' + package_name + '/launch', ['launch/armor.launch.py']),
+        ('share/' + package_name + '/config', ['config/armor.params.yaml']),
     ],
     install_requires=['setuptools'],
     zip_safe=True,

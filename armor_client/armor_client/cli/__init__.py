@@ -9,11 +9,22 @@ import sys
 VERBS = ('serve', 'call', 'load', 'query', 'sparql', 'save', 'refs', 'shell')
 
 
+def _version() -> str:
+    """The one version of the repository (CHANGELOG.md): the installed armor_client's."""
+    from importlib.metadata import PackageNotFoundError, version
+    try:
+        return version('armor_client')
+    except PackageNotFoundError:
+        return 'unknown (armor_client is not installed)'
+
+
 def build_parser(only: str = '') -> argparse.ArgumentParser:
     """The parser of every verb, or only of verb `only` (its module alone is imported)."""
     parser = argparse.ArgumentParser(
         prog='armor', description='ARMOR for ROS 2: OWL ontologies with reasoners, as a ROS 2 '
         'service. Run "armor VERB --help" for the details of a verb.')
+    parser.add_argument('--version', action='version', version=f'armor {_version()}',
+                        help='print the version of ARMOR for ROS 2 and exit')
     verbs = parser.add_subparsers(dest='verb', metavar='VERB', required=True)
     for name in ([only] if only in VERBS else VERBS):
         module = importlib.import_module(f'armor_client.cli.{name}')
