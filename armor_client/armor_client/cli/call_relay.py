@@ -105,7 +105,9 @@ class _Relay:
         if self._server is None:
             return  # another relay serves this environment
         import rclpy
-        rclpy.init()
+        from rclpy.signals import SignalHandlerOptions
+        # No rclpy signal handlers: SIGTERM and SIGINT end the relay as they end any process.
+        rclpy.init(signal_handler_options=SignalHandlerOptions.NO)
         try:
             threading.Thread(target=self._exit_when_idle, daemon=True).start()
             while True:
