@@ -213,7 +213,15 @@ class CoreProcess:
             word, _, rest = line.partition(' ')
             if word in _LEVELS:
                 level, line = _LEVELS[word], rest
-            getattr(self._log, level)(f'core: {line}')
+            # One call site per level: rclpy refuses a call site whose severity changes.
+            if level == 'error':
+                self._log.error(f'core: {line}')
+            elif level == 'warning':
+                self._log.warning(f'core: {line}')
+            elif level == 'info':
+                self._log.info(f'core: {line}')
+            else:
+                self._log.debug(f'core: {line}')
 
     def _read_replies(self, connection: socket.socket, generation: int) -> None:
         try:
