@@ -29,6 +29,10 @@ demo: setup  ## run the surveillance tutorial against a running service (make ru
 test: setup  ## run the whole test suite: JUnit (core) and pytest (node over real ROS 2)
 	bash tools/test.sh
 
+.PHONY: catalogue
+catalogue: setup  ## regenerate what follows the core's catalogue (after adding a command, exit code or setting)
+	source install/setup.bash && python tools/catalogue.py
+
 .PHONY: bench
 bench: setup  ## run the benchmark suite and write bench/REPORT.md
 	source install/setup.bash && python -m pip install -q -r bench/requirements.txt \

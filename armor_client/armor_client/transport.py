@@ -12,20 +12,12 @@ import time
 from typing import Optional, Sequence
 
 from armor_client.errors import ArmorCallTimeout, ArmorServiceCallError
+from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 import rclpy
 from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
-from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy
-
-DIRECTIVE_SERVICE = 'armor_interface_srv'
-LIST_SERVICE = 'armor_interface_serialized_srv'
-
-# As deep as the node's (armor_service.node.SERVICE_QOS): the default depth of 10 loses answers
-# under load. Kept here too so the client needs nothing from the service package.
-SERVICE_QOS = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=1000,
-                         reliability=ReliabilityPolicy.RELIABLE)
 
 _node_numbers = itertools.count()
 

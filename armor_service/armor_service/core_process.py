@@ -21,9 +21,6 @@ from typing import Callable, Optional
 
 from armor_service import wire
 
-# Exit code the core reserves for "knowledge core restarting or unreachable" (ExitCode.java).
-CORE_UNAVAILABLE = 216
-
 _READY_PREFIX = 'ARMOR core ready on '
 # What the core prints instead of the ready line when it cannot start (CoreMain.java).
 _CANNOT_START_PREFIX = 'ARMOR core cannot start: '
@@ -136,6 +133,10 @@ class CoreProcess:
             connection = self._socket
             generation = self._generation
         return self._exchange(payload, connection, generation, timeout_s)
+
+    def catalogue(self, timeout_s: Optional[float] = None) -> dict:
+        """The running core's catalogue: commands (with plugins'), exit codes, settings."""
+        return self.request({'op': 'catalogue'}, timeout_s)['catalogue']
 
     def _exchange(self, payload: dict, connection: socket.socket, generation: int,
                   timeout_s: Optional[float]) -> dict:

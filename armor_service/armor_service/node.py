@@ -11,25 +11,16 @@ import os
 import sys
 import tempfile
 
+from armor_contract.exit_codes import ExitCode
+from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service import wire
-from armor_service.core_process import CORE_UNAVAILABLE, CoreProcess, CoreUnavailable
+from armor_service.core_process import CoreProcess, CoreUnavailable
 import rclpy
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.node import Node
-from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy
 from rcl_interfaces.msg import ParameterDescriptor
-
-# The default service QoS keeps 10 samples: with more answers than that in flight to slow
-# clients, a reliable writer overwrites ones not yet acknowledged and those clients wait forever
-# (seen with 8 client processes on 2 cores). Requests and answers are small; keep many.
-SERVICE_QOS = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=1000,
-                         reliability=ReliabilityPolicy.RELIABLE)
-
-# Exit codes the core reserves (ExitCode.java): "time limit reached", "too large".
-TIMEOUT = 211
-TOO_LARGE = 221
 
 # Settings handed to the core at start; the names are the core's configuration keys.
 _CORE_SETTINGS = ('full_entity_iri', 'default_reasoner', 'allowed_dirs', 'web_loading',
@@ -56,20 +47,16 @@ class ArmorService(Node):
         # executor lets a slow REASON on one reference wait while queries on others (and on
         # the same one, which the core serialises per reference) are answered meanwhile.
         group = ReentrantCallbackGroup()
-        self.create_service(ArmorDirective, 'armor_interface_srv', self.directive_callback,
+        self.create_service(ArmorDirective, DIRECTIVE_SERVICE, self.directive_callback,
                             qos_profile=SERVICE_QOS, callback_group=group)
-        self.create_service(ArmorDirectiveList, 'armor_interface_serialized_srv',
+        self.create_service(ArmorDirectiveList, LIST_SERVICE,
                             self.directive_list_callback, qos_profile=SERVICE_QOS,
                             callback_group=group)
         self.get_logger().info(
-            f'ARMOR ready: services {self.resolve_service_name("armor_interface_srv")} and '
-            f'{self.resolve_service_name("armor_interface_serialized_srv")}; core pid '
+            f'ARMOR ready: services {self.resolve_service_name(DIRECTIVE_SERVICE)} and '
+            f'{self.resolve_service_name(LIST_SERVICE)}; core pid '
             f'{self._core.pid}. Try: armor call {self._value("preload_reference") or "REF"} '
             'QUERY IND CLASS -- Room')
-
-    @property
-    def core(self) -> CoreProcess:
-        return self._core
 
     def directive_callback(self, request, response):
         payload = {'op': 'directive', 'directive': wire.directive_to_json(request.armor_request)}
@@ -77,9 +64,9 @@ class ArmorService(Node):
             reply = self._core.request(payload, self._request_timeout())
             response.armor_response = wire.response_from_json(reply['response'])
         except CoreUnavailable as error:
-            response.armor_response = wire.error_response(CORE_UNAVAILABLE, str(error))
+            response.armor_response = wire.error_response(ExitCode.CORE_UNAVAILABLE, str(error))
         except wire.FrameTooLarge as error:
-            response.armor_response = wire.error_response(TOO_LARGE, str(error))
+            response.armor_response = wire.error_response(ExitCode.TOO_LARGE, str(error))
         except concurrent.futures.TimeoutError:
             response.armor_response = self._timed_out()
         return response
@@ -95,11 +82,11 @@ class ArmorService(Node):
                                         for r in reply['armor_responses']]
         except CoreUnavailable as error:
             response.success = False
-            response.armor_responses = [wire.error_response(CORE_UNAVAILABLE, str(error))
+            response.armor_responses = [wire.error_response(ExitCode.CORE_UNAVAILABLE, str(error))
                                         for _ in directives]
         except wire.FrameTooLarge as error:
             response.success = False
-            response.armor_responses = [wire.error_response(TOO_LARGE, str(error))
+            response.armor_responses = [wire.error_response(ExitCode.TOO_LARGE, str(error))
                                         for _ in directives]
         except concurrent.futures.TimeoutError:
             response.success = False
@@ -111,7 +98,7 @@ class ArmorService(Node):
 
     def _timed_out(self):
         answer = wire.error_response(
-            TIMEOUT, f'no answer from the core within request_timeout_s='
+            ExitCode.TIMEOUT, f'no answer from the core within request_timeout_s='
             f'{self._value("request_timeout_s")}; the directive may still complete')
         answer.timeout = True
         return answer

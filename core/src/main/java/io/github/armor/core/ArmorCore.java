@@ -8,6 +8,7 @@ import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.api.SizeLimits;
 import io.github.armor.core.command.CommandContext;
+import io.github.armor.core.command.CommandKind;
 import io.github.armor.core.command.CommandSpec;
 import io.github.armor.core.command.CommandSuggestions;
 import io.github.armor.core.command.CommandTable;
@@ -35,7 +36,7 @@ public final class ArmorCore implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(ArmorCore.class);
 
     private final CoreConfig config;
-    private final CommandTable commands = CommandTable.standard();
+    private final CommandTable commands;
     private final ReferenceRegistry references = new ReferenceRegistry();
     private final Rendering rendering;
     private final DirectiveLog directiveLog = new DirectiveLog(System.err);
@@ -44,8 +45,15 @@ public final class ArmorCore implements AutoCloseable {
     // Replayed directives were journaled when first acknowledged: they must not be again.
     private final ThreadLocal<Boolean> replaying = ThreadLocal.withInitial(() -> false);
 
+    /** A core answering the commands of its own jar. */
     public ArmorCore(CoreConfig config) {
+        this(config, CommandTable.standard());
+    }
+
+    /** A core answering the commands of {@code commands} (the built-in groups plus plugins'). */
+    public ArmorCore(CoreConfig config, CommandTable commands) {
         this.config = config;
+        this.commands = commands;
         this.rendering = new Rendering(config.fullEntityIri());
         this.state = config.durability().stateDir() == null ? null : new StateStore(config.durability());
     }
@@ -83,10 +91,7 @@ public final class ArmorCore implements AutoCloseable {
         replaying.set(true);
         try {
             for (Directive directive : record) {
-                // A journaled REASON stands for its APPLY: the restored reasoner sees everything anyway.
-                Directive replayed = directive.key().equals("REASON - -") ? new Directive(directive.clientName(),
-                        directive.referenceName(), "APPLY", "", "", List.of()) : directive;
-                Response response = run(replayed, null);
+                Response response = run(directive, null);
                 if (!response.success()) {
                     LOG.warn("replaying {} failed: {} {}", directive.describe(), response.exitCode(),
                             response.errorDescription());
@@ -105,18 +110,13 @@ public final class ArmorCore implements AutoCloseable {
         }
     }
 
-    /** Directives whose effect must survive a restart: changes, APPLY/REASON, mounting. */
+    /** Directives whose effect must survive a restart (by kind: changes and mounting), when not replayed. */
     private boolean journaled(CommandSpec spec) {
-        return state != null && !replaying.get() && (spec.mountChecked() || spec.key().equals("MOUNT - -")
-                || spec.key().equals("UNMOUNT - -"));
+        return state != null && !replaying.get() && spec.kind().journaled();
     }
 
     /** The answer of a list: one response per directive, in order. */
     public record ListResponse(boolean success, boolean isConsistent, List<Response> responses) {}
-
-    public CommandTable commands() {
-        return commands;
-    }
 
     public Response execute(Directive directive) {
         try {
@@ -216,7 +216,7 @@ public final class ArmorCore implements AutoCloseable {
             lastHeardFrom.put(directive.clientName(), System.nanoTime());
         }
         CommandSpec spec = commands.find(directive.key()).orElse(null);
-        if (directive.referenceName().isEmpty() && (spec == null || spec.target() != CommandSpec.Target.NONE)) {
+        if (directive.referenceName().isEmpty() && (spec == null || spec.target() != CommandKind.Target.NONE)) {
             throw new ArmorException(ExitCode.NO_REFERENCE_NAME, "no reference name given"
                     + (directive.command().isEmpty() ? "" : " for " + directive.describe()));
         }
@@ -226,7 +226,7 @@ public final class ArmorCore implements AutoCloseable {
         if (spec == null) {
             throw new ArmorException(ExitCode.UNKNOWN_COMMAND, "unknown command '" + directive.describe()
                     + "' (read as " + directive.key() + "); closest: " + String.join("; ",
-                    CommandSuggestions.closest(commands.all(), directive.key(), directive.args().size())));
+                    CommandSuggestions.closest(commands.catalogue(), directive.key(), directive.args().size())));
         }
         spec.checkArity(directive.args().size());
         return switch (spec.target()) {
@@ -250,7 +250,7 @@ public final class ArmorCore implements AutoCloseable {
                     if (list != null && journaled(spec)) {
                         list.toJournal.computeIfAbsent(reference, r -> new ArrayList<>()).add(directive);
                     }
-                    if (state != null && !replaying.get() && spec.key().equals("DROP - -")) {
+                    if (state != null && !replaying.get() && spec.kind() == CommandKind.DROPPING) {
                         state.dropped(reference);
                     }
                     return response;
@@ -328,7 +328,7 @@ public final class ArmorCore implements AutoCloseable {
     }
 
     private CommandContext context(Directive directive, Reference reference) {
-        return new CommandContext(directive, reference, references, config, rendering, directiveLog);
+        return new CommandContext(directive, reference, references, config, rendering, directiveLog, replaying.get());
     }
 
     private void checkMount(Reference reference, Directive directive) {

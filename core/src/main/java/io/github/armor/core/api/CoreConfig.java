@@ -3,6 +3,7 @@ package io.github.armor.core.api;
 
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Settings fixed when the core starts. The ROS node declares a parameter of the same name for
@@ -40,7 +41,9 @@ public record CoreConfig(
      */
     public record Durability(Path stateDir, boolean restore, boolean fsync, int checkpointEveryChanges,
                              long checkpointEverySeconds) {
-        public static final Durability NONE = new Durability(null, false, false, 1000, 60);
+        public static final Durability NONE = new Durability(null, false, false,
+                ((Long) Setting.CHECKPOINT_EVERY_CHANGES.defaultValue()).intValue(),
+                (Long) Setting.CHECKPOINT_EVERY_S.defaultValue());
     }
 
     /**
@@ -54,7 +57,9 @@ public record CoreConfig(
      */
     public record Safeguards(long sparqlTimeoutMs, boolean sparqlFederated, boolean ignoreMissingImports,
                              boolean strictNames) {
-        public static final Safeguards DEFAULT = new Safeguards(30_000, false, false, false);
+        public static final Safeguards DEFAULT = new Safeguards((Long) Setting.SPARQL_TIMEOUT_MS.defaultValue(),
+                (Boolean) Setting.SPARQL_FEDERATED.defaultValue(), (Boolean) Setting.IGNORE_MISSING_IMPORTS.defaultValue(),
+                (Boolean) Setting.STRICT_NAMES.defaultValue());
 
         public Safeguards(long sparqlTimeoutMs, boolean sparqlFederated, boolean ignoreMissingImports) {
             this(sparqlTimeoutMs, sparqlFederated, ignoreMissingImports, false);
@@ -72,6 +77,29 @@ public record CoreConfig(
         allowedDirs = List.copyOf(allowedDirs);
         safeguards = safeguards == null ? Safeguards.DEFAULT : safeguards;
         defaultReasoner = defaultReasoner == null || defaultReasoner.isBlank() ? "PELLET" : defaultReasoner;
+    }
+
+    /** The configuration the values of every {@link Setting} make (an empty state_dir keeps nothing). */
+    @SuppressWarnings("unchecked")
+    public static CoreConfig fromSettings(Map<Setting, Object> values) {
+        String stateDir = (String) values.get(Setting.STATE_DIR);
+        Durability durability = stateDir.isBlank() ? Durability.NONE : new Durability(Path.of(stateDir),
+                (Boolean) values.get(Setting.RESTORE_STATE), (Boolean) values.get(Setting.JOURNAL_FSYNC),
+                Math.toIntExact((Long) values.get(Setting.CHECKPOINT_EVERY_CHANGES)),
+                (Long) values.get(Setting.CHECKPOINT_EVERY_S));
+        return new CoreConfig(
+                (Boolean) values.get(Setting.FULL_ENTITY_IRI),
+                (String) values.get(Setting.DEFAULT_REASONER),
+                ((List<String>) values.get(Setting.ALLOWED_DIRS)).stream().map(Path::of).toList(),
+                (Boolean) values.get(Setting.WEB_LOADING),
+                (Long) values.get(Setting.LOCK_WAIT_MS),
+                (Long) values.get(Setting.REASONER_TIMEOUT_MS),
+                (Long) values.get(Setting.MOUNT_LEASE_S),
+                durability,
+                new Safeguards((Long) values.get(Setting.SPARQL_TIMEOUT_MS),
+                        (Boolean) values.get(Setting.SPARQL_FEDERATED),
+                        (Boolean) values.get(Setting.IGNORE_MISSING_IMPORTS),
+                        (Boolean) values.get(Setting.STRICT_NAMES)));
     }
 
     /** Settings for tests and embedding: full IRIs, Openllet, the given directories, generous waits. */

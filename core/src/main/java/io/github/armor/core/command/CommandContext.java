@@ -29,17 +29,24 @@ public final class CommandContext {
     private final CoreConfig config;
     private final Rendering rendering;
     private final DirectiveLog log;
+    private final boolean replaying;
     private Supplier<Response> afterRelease;
     private final List<String> unknownNames = new ArrayList<>();
 
     public CommandContext(Directive directive, Reference reference, ReferenceRegistry references,
-                          CoreConfig config, Rendering rendering, DirectiveLog log) {
+                          CoreConfig config, Rendering rendering, DirectiveLog log, boolean replaying) {
         this.directive = directive;
         this.reference = reference;
         this.references = references;
         this.config = config;
         this.rendering = rendering;
         this.log = log;
+        this.replaying = replaying;
+    }
+
+    /** Whether the directive is a journal record replayed at start, not a client's request. */
+    public boolean replaying() {
+        return replaying;
     }
 
     /**

@@ -7,31 +7,39 @@ import io.github.armor.core.api.Response;
 import java.util.List;
 
 /**
- * One COMMAND PRIMARY SECONDARY combination: what it targets, whether the mount guards it, and
- * the arguments it takes (named, for error messages and for the commands reference).
+ * One COMMAND PRIMARY SECONDARY combination: its kind, the arguments it takes (named, for error
+ * messages and the catalogue), what it does in one line, and the code that answers it.
+ *
+ * @param key     the dispatch key, {@code "QUERY IND CLASS"}, {@code "DROP - -"}
+ * @param aliases other keys answered the same way ({@code "ADD MIN CARDINALITY"})
  */
 public record CommandSpec(
         String key,
-        Target target,
-        boolean mountChecked,
+        List<String> aliases,
+        CommandKind kind,
         List<String> required,
         List<String> optional,
         boolean variadic,
+        String summary,
         Handler handler) {
-
-    /** What the reference name of a directive must name. */
-    public enum Target {
-        /** Works without a reference (GET ALL REFS, LOG). */
-        NONE,
-        /** Creates the reference (LOAD, CREATE). */
-        NEW,
-        /** An existing reference. */
-        EXISTING
-    }
 
     @FunctionalInterface
     public interface Handler {
         Response run(CommandContext context);
+    }
+
+    public CommandSpec {
+        aliases = List.copyOf(aliases);
+        required = List.copyOf(required);
+        optional = List.copyOf(optional);
+    }
+
+    public CommandKind.Target target() {
+        return kind.target();
+    }
+
+    public boolean mountChecked() {
+        return kind.mountChecked();
     }
 
     /** Checks the argument count, naming what was expected. */

@@ -2,33 +2,40 @@
 package io.github.armor.core.command;
 
 import io.github.armor.core.command.CommandSpec.Handler;
-import io.github.armor.core.command.CommandSpec.Target;
 import java.util.ArrayList;
-import java.util.Collection;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.ServiceLoader;
 import java.util.TreeMap;
 
 /** All commands the core answers, by dispatch key ({@code "QUERY IND CLASS"}, {@code "DROP - -"}). */
 public final class CommandTable {
-    private final Map<String, CommandSpec> specs = new TreeMap<>();
+    private final Map<String, CommandSpec> byKey = new TreeMap<>();
+    private final Map<String, CommandSpec> commands = new LinkedHashMap<>();
 
-    /** The table with every command of the contract registered. */
-    public static CommandTable standard() {
+    /** The table of every {@link CommandGroup} the class loader finds: the built-in ones, then plugins'. */
+    public static CommandTable load(ClassLoader loader) {
         CommandTable table = new CommandTable();
-        ReferenceCommands.register(table);
-        Manipulations.register(table);
-        Queries.register(table);
+        for (CommandGroup group : ServiceLoader.load(CommandGroup.class, loader)) {
+            group.register(table);
+        }
         return table;
     }
 
-    public Optional<CommandSpec> find(String key) {
-        return Optional.ofNullable(specs.get(key));
+    /** The table of the core's own jar (and its class path). */
+    public static CommandTable standard() {
+        return load(CommandTable.class.getClassLoader());
     }
 
-    public Collection<CommandSpec> all() {
-        return specs.values();
+    public Optional<CommandSpec> find(String key) {
+        return Optional.ofNullable(byKey.get(key));
+    }
+
+    /** Each command once (aliases inside it), in registration order: what the catalogue lists. */
+    public List<CommandSpec> catalogue() {
+        return List.copyOf(commands.values());
     }
 
     /** Starts registering the command written as "COMMAND [PRIMARY [SECONDARY]]". */
@@ -44,13 +51,14 @@ public final class CommandTable {
         return String.join(" ", parts);
     }
 
-    /** Collects one command's shape, then registers it with its handler. */
+    /** Collects one command's shape, then registers it with its handler under the kind it names. */
     public final class Builder {
         private final String key;
         private final List<String> aliases = new ArrayList<>();
         private List<String> required = List.of();
         private List<String> optional = List.of();
         private boolean variadic;
+        private String summary = "";
 
         private Builder(String key) {
             this.key = key;
@@ -71,50 +79,66 @@ public final class CommandTable {
             return this;
         }
 
+        /** The last required argument may be repeated. */
         public Builder variadic() {
             variadic = true;
             return this;
         }
 
+        /** What the command does, in one line (the catalogue, the CLI and the docs show it). */
+        public Builder summary(String text) {
+            summary = text;
+            return this;
+        }
+
         /** A read: never mount-checked. */
         public void query(Handler handler) {
-            register(Target.EXISTING, false, handler);
+            register(CommandKind.QUERY, handler);
         }
 
         /** A change: refused with 102 while another client holds the mount. */
         public void manipulation(Handler handler) {
-            register(Target.EXISTING, true, handler);
+            register(CommandKind.MANIPULATION, handler);
         }
 
-        /** A utility on an existing reference (SAVE, DROP, MOUNT...): no mount check. */
+        /** A utility on an existing reference that changes nothing (SAVE). */
         public void onReference(Handler handler) {
-            register(Target.EXISTING, false, handler);
+            register(CommandKind.REFERENCE, handler);
+        }
+
+        /** Takes or releases the reference's mount. */
+        public void mounting(Handler handler) {
+            register(CommandKind.MOUNTING, handler);
+        }
+
+        /** Unloads the reference. */
+        public void dropping(Handler handler) {
+            register(CommandKind.DROPPING, handler);
         }
 
         /** Creates the reference the directive names (LOAD, CREATE). */
         public void creating(Handler handler) {
-            register(Target.NEW, false, handler);
+            register(CommandKind.CREATING, handler);
         }
 
         /** Needs no reference (GET ALL REFS, LOG). */
         public void global(Handler handler) {
-            register(Target.NONE, false, handler);
+            register(CommandKind.GLOBAL, handler);
         }
 
-        private void register(Target target, boolean mountChecked, Handler handler) {
-            for (String name : concat(key, aliases)) {
-                CommandSpec previous = specs.put(name, new CommandSpec(name, target, mountChecked, required,
-                        optional, variadic, handler));
-                if (previous != null) {
+        private void register(CommandKind kind, Handler handler) {
+            if (summary.isBlank()) {
+                throw new IllegalStateException("command " + key + " has no summary");
+            }
+            CommandSpec spec = new CommandSpec(key, aliases, kind, required, optional, variadic, summary, handler);
+            List<String> keys = new ArrayList<>(aliases);
+            keys.add(0, key);
+            for (String name : keys) {
+                if (byKey.putIfAbsent(name, spec) != null) {
                     throw new IllegalStateException("command registered twice: " + name);
                 }
             }
-        }
-
-        private List<String> concat(String first, List<String> rest) {
-            List<String> all = new ArrayList<>(rest);
-            all.add(0, first);
-            return all;
+            commands.put(key, spec);
         }
     }
 }

@@ -32,56 +32,65 @@ import org.semanticweb.owlapi.util.OWLEntityRemover;
 import org.semanticweb.owlapi.util.OWLEntityRenamer;
 
 /** Contract 5.2: every change a client can make, each refused with 102 under a foreign mount. */
-final class Manipulations {
-    private Manipulations() {}
-
-    static void register(CommandTable table) {
+public final class Manipulations implements CommandGroup {
+    @Override
+    public void register(CommandTable table) {
         registerArmorCommands(table);
         registerPairs(table);
         registerRenames(table);
     }
 
     private static void registerArmorCommands(CommandTable table) {
-        table.command("ADD IND").args("ind").manipulation(c -> c.change(adds(c, List.of(
+        table.command("ADD IND").args("ind").summary("declare an individual").manipulation(c -> c.change(adds(c, List.of(
                 c.factory().getOWLDeclarationAxiom(c.individual(0)),
                 c.factory().getOWLClassAssertionAxiom(c.factory().getOWLThing(), c.individual(0))))));
-        table.command("ADD CLASS").args("class").manipulation(c -> c.change(adds(c, List.of(
+        table.command("ADD CLASS").args("class").summary("declare a class").manipulation(c -> c.change(adds(c, List.of(
                 c.factory().getOWLDeclarationAxiom(c.owlClass(0)),
                 c.factory().getOWLSubClassOfAxiom(c.owlClass(0), c.factory().getOWLThing())))));
         table.command("ADD CARDINALITY MIN").alias("ADD MIN CARDINALITY")
                 .args("class", "object prop", "n", "value class")
+                .summary("class SubClassOf prop min n value class")
                 .manipulation(c -> c.change(adds(c, List.of(c.factory().getOWLSubClassOfAxiom(c.owlClass(0),
                         c.factory().getOWLObjectMinCardinality(cardinality(c.arg(2)), c.objectProperty(1),
                                 c.owlClass(3)))))));
-        table.command("DISJOINT IND").args("ind", "ind").variadic().manipulation(c -> c.change(adds(c, List.of(
+        table.command("DISJOINT IND").args("ind", "ind").variadic()
+                .summary("assert that the individuals are different").manipulation(c -> c.change(adds(c, List.of(
                 c.factory().getOWLDifferentIndividualsAxiom(all(c, CommandContext::individual))))));
-        table.command("DISJOINT CLASS").args("class", "class").variadic().manipulation(c -> c.change(adds(c, List.of(
+        table.command("DISJOINT CLASS").args("class", "class").variadic()
+                .summary("assert that the classes are disjoint").manipulation(c -> c.change(adds(c, List.of(
                 c.factory().getOWLDisjointClassesAxiom(all(c, CommandContext::owlClass))))));
-        table.command("DISJOINT IND CLASS").args("class").manipulation(c -> {
+        table.command("DISJOINT IND CLASS").args("class")
+                .summary("make all instances of the class different from each other").manipulation(c -> {
             Set<OWLNamedIndividual> members = Inferences.instances(c.reference(), c.owlClass(0), false);
             return c.change(members.size() < 2 ? List.of()
                     : adds(c, List.of(c.factory().getOWLDifferentIndividualsAxiom(members))));
         });
-        table.command("DISJOINT CLASS CLASS").args("class").manipulation(c -> {
+        table.command("DISJOINT CLASS CLASS").args("class")
+                .summary("make the direct subclasses of the class disjoint").manipulation(c -> {
             Set<OWLClass> children = Inferences.subClasses(c.reference(), c.owlClass(0), true);
             return c.change(children.size() < 2 ? List.of()
                     : adds(c, List.of(c.factory().getOWLDisjointClassesAxiom(children))));
         });
-        table.command("MAKE EQUIVALENT CLASS").args("class").manipulation(c -> c.change(makeEquivalentChanges(c)));
-        table.command("REMOVE IND").args("ind").manipulation(c -> c.change(removeEntity(c.reference(),
+        table.command("MAKE EQUIVALENT CLASS").args("class")
+                .summary("turn its SubClassOf axioms into one EquivalentClasses").manipulation(c -> c.change(makeEquivalentChanges(c)));
+        table.command("REMOVE IND").args("ind").summary("remove every axiom that mentions the individual").manipulation(c -> c.change(removeEntity(c.reference(),
                 c.individual(0))));
-        table.command("REMOVE CLASS").args("class").manipulation(c -> c.change(removeEntity(c.reference(),
+        table.command("REMOVE CLASS").args("class").summary("remove every axiom that mentions the class").manipulation(c -> c.change(removeEntity(c.reference(),
                 c.owlClass(0))));
         table.command("REPLACE DATAPROP IND").args("prop", "ind", "type", "new value", "old value")
+                .summary("replace one data property value by another")
                 .manipulation(Manipulations::replaceDataValue);
-        table.command("ADD DATAPROP IND").args("prop", "ind", "type", "value").manipulation(c -> c.change(adds(c,
+        table.command("ADD DATAPROP IND").args("prop", "ind", "type", "value")
+                .summary("give the individual a data property value").manipulation(c -> c.change(adds(c,
                 List.of(c.factory().getOWLDataPropertyAssertionAxiom(c.dataProperty(0), c.individual(1),
                         c.literal(2, 3))))));
-        table.command("REMOVE DATAPROP IND").args("prop", "ind", "type", "value").manipulation(c -> c.change(
+        table.command("REMOVE DATAPROP IND").args("prop", "ind", "type", "value")
+                .summary("remove that data property value").manipulation(c -> c.change(
                 removes(c, List.of(c.factory().getOWLDataPropertyAssertionAxiom(c.dataProperty(0), c.individual(1),
                         Literals.stored(c.reference().ontology(), c.dataProperty(0), c.individual(1),
                                 c.literal(2, 3)))))));
         table.command("REPLACE OBJECTPROP IND").args("prop", "ind", "new value", "old value")
+                .summary("replace one related individual by another")
                 .manipulation(c -> {
                     OWLDataFactory f = c.factory();
                     List<OWLOntologyChange> changes = new ArrayList<>(removes(c, List.of(
@@ -96,42 +105,61 @@ final class Manipulations {
     /** Commands that exist as ADD X and REMOVE X over the same axioms. */
     private static void registerPairs(CommandTable table) {
         pair(table, "IND CLASS", new String[] {"ind", "class"}, false,
+                "assert that the individual belongs to the class", "remove that class assertion",
                 c -> List.of(c.factory().getOWLClassAssertionAxiom(c.owlClass(1), c.individual(0))));
         pair(table, "CLASS CLASS", new String[] {"sub", "super"}, false,
+                "assert that sub is a subclass of super", "remove that SubClassOf axiom",
                 c -> List.of(c.factory().getOWLSubClassOfAxiom(c.owlClass(0), c.owlClass(1))));
         pair(table, "OBJECTPROP IND", new String[] {"prop", "ind", "value ind"}, false,
+                "relate the individual to another", "remove that relation",
                 c -> List.of(c.factory().getOWLObjectPropertyAssertionAxiom(c.objectProperty(0), c.individual(1),
                         c.individual(2))));
         pair(table, "OBJECTPROP OBJECTPROP", new String[] {"sub", "super"}, false,
+                "assert an object sub-property", "remove that sub-property axiom",
                 c -> List.of(c.factory().getOWLSubObjectPropertyOfAxiom(c.objectProperty(0), c.objectProperty(1))));
         pair(table, "DATAPROP DATAPROP", new String[] {"sub", "super"}, false,
+                "assert a data sub-property", "remove that sub-property axiom",
                 c -> List.of(c.factory().getOWLSubDataPropertyOfAxiom(c.dataProperty(0), c.dataProperty(1))));
         pair(table, "OBJECTPROP INVERSE", new String[] {"prop", "inverse prop"}, false,
+                "assert that two object properties are inverses", "remove that inverse axiom",
                 c -> List.of(c.factory().getOWLInverseObjectPropertiesAxiom(c.objectProperty(0),
                         c.objectProperty(1))));
         pair(table, "OBJECTPROP CHARACTERISTIC", new String[] {"prop", "characteristic"}, false,
+                "FUNCTIONAL, TRANSITIVE, SYMMETRIC, ...", "remove that characteristic",
                 c -> List.of(objectCharacteristic(c.factory(), c.objectProperty(0), c.arg(1))));
         pair(table, "DATAPROP CHARACTERISTIC", new String[] {"prop", "characteristic"}, false,
+                "make a data property FUNCTIONAL", "remove that characteristic",
                 c -> List.of(dataCharacteristic(c.factory(), c.dataProperty(0), c.arg(1))));
         pair(table, "OBJECTPROP DOMAIN", new String[] {"prop", "class"}, false,
+                "object property domain", "remove that domain",
                 c -> List.of(c.factory().getOWLObjectPropertyDomainAxiom(c.objectProperty(0), c.owlClass(1))));
         pair(table, "OBJECTPROP RANGE", new String[] {"prop", "class"}, false,
+                "object property range", "remove that range",
                 c -> List.of(c.factory().getOWLObjectPropertyRangeAxiom(c.objectProperty(0), c.owlClass(1))));
         pair(table, "DATAPROP DOMAIN", new String[] {"prop", "class"}, false,
+                "data property domain", "remove that domain",
                 c -> List.of(c.factory().getOWLDataPropertyDomainAxiom(c.dataProperty(0), c.owlClass(1))));
         pair(table, "DATAPROP RANGE", new String[] {"prop", "datatype"}, false,
+                "data property range", "remove that range",
                 c -> List.of(c.factory().getOWLDataPropertyRangeAxiom(c.dataProperty(0),
                         Literals.datatype(c.factory(), c.reference().names(), c.arg(1)))));
         pair(table, "IND SAME", new String[] {"ind", "ind"}, true,
+                "assert that the individuals are the same", "remove that SameIndividual axiom",
                 c -> List.of(c.factory().getOWLSameIndividualAxiom(all(c, CommandContext::individual))));
         pair(table, "CLASS EQUIVALENT", new String[] {"class", "class expression"}, false,
+                "define the class by a Manchester class expression", "remove that definition",
                 c -> List.of(c.factory().getOWLEquivalentClassesAxiom(c.owlClass(0),
                         Syntax.classExpression(c.reference(), c.arg(1)))));
         pair(table, "AXIOM", new String[] {"axiom"}, false,
+                "one axiom in Manchester or functional syntax", "remove that axiom",
                 c -> List.of(Syntax.axiom(c.reference(), c.arg(0))));
         pair(table, "SWRL", new String[] {"rule name", "rule"}, false,
+                "add a SWRL rule", "remove a SWRL rule",
                 c -> List.of(Syntax.rule(c.reference(), c.arg(0), c.arg(1))));
     }
+
+    private static final List<String> NAMES = List.of("an individual", "a class", "a data property",
+            "an object property");
 
     private static void registerRenames(CommandTable table) {
         List<EntityType<?>> kinds = List.of(EntityType.NAMED_INDIVIDUAL, EntityType.CLASS, EntityType.DATA_PROPERTY,
@@ -139,7 +167,8 @@ final class Manipulations {
         List<String> words = List.of("IND", "CLASS", "DATAPROP", "OBJECTPROP");
         for (int i = 0; i < kinds.size(); i++) {
             EntityType<?> kind = kinds.get(i);
-            table.command("RENAME " + words.get(i)).args("old name", "new name").manipulation(c -> {
+            table.command("RENAME " + words.get(i)).args("old name", "new name")
+                    .summary("rename " + NAMES.get(i) + " everywhere").manipulation(c -> {
                 Reference reference = c.reference();
                 IRI from = reference.names().iri(kind, c.arg(0));
                 IRI to = reference.names().iri(kind, c.arg(1));
@@ -150,10 +179,10 @@ final class Manipulations {
         }
     }
 
-    private static void pair(CommandTable table, String words, String[] args, boolean variadic,
-                             Function<CommandContext, List<? extends OWLAxiom>> axioms) {
-        CommandTable.Builder add = table.command("ADD " + words).args(args);
-        CommandTable.Builder remove = table.command("REMOVE " + words).args(args);
+    private static void pair(CommandTable table, String words, String[] args, boolean variadic, String addSummary,
+                             String removeSummary, Function<CommandContext, List<? extends OWLAxiom>> axioms) {
+        CommandTable.Builder add = table.command("ADD " + words).args(args).summary(addSummary);
+        CommandTable.Builder remove = table.command("REMOVE " + words).args(args).summary(removeSummary);
         if (variadic) {
             add.variadic();
             remove.variadic();

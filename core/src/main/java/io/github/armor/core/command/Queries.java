@@ -23,31 +23,34 @@ import org.semanticweb.owlapi.reasoner.OWLReasoner;
 import org.semanticweb.owlapi.search.EntitySearcher;
 
 /** Contract 5.3: every question, answered from asserted plus inferred knowledge, sorted. */
-final class Queries {
-    private Queries() {}
-
-    static void register(CommandTable table) {
+public final class Queries implements CommandGroup {
+    @Override
+    public void register(CommandTable table) {
         registerIndividualQueries(table);
         registerClassQueries(table);
         registerPropertyQueries(table);
-        table.command("QUERY SPARQL").args("query").variadic().query(c -> Sparql.answer(c, false));
-        table.command("QUERY SPARQL FORMATTED").args("query").variadic().query(c -> Sparql.answer(c, true));
-        table.command("QUERY CONSISTENCY").query(Explanations::answer);
+        table.command("QUERY SPARQL").args("query").variadic()
+                .summary("SPARQL SELECT or ASK, one string per row").query(c -> Sparql.answer(c, false));
+        table.command("QUERY SPARQL FORMATTED").args("query").variadic()
+                .summary("SPARQL SELECT or ASK, rows as variable/value pairs").query(c -> Sparql.answer(c, true));
+        table.command("QUERY CONSISTENCY").summary("is it consistent, and if not, why").query(Explanations::answer);
     }
 
     private static void registerIndividualQueries(CommandTable table) {
-        table.command("QUERY IND").args("ind").query(c -> c.ok(c.render().entities(types(c.reference(),
+        table.command("QUERY IND").args("ind").summary("the classes of the individual").query(c -> c.ok(c.render().entities(types(c.reference(),
                 c.individual(0), false).stream())));
-        table.command("QUERY IND CLASS").args("class").query(c -> c.ok(c.render().entities(
+        table.command("QUERY IND CLASS").args("class").summary("the instances of the class").query(c -> c.ok(c.render().entities(
                 Inferences.instances(c.reference(), c.owlClass(0), false).stream())));
-        table.command("QUERY IND DL").args("class expression").query(c -> c.ok(c.render().entities(
+        table.command("QUERY IND DL").args("class expression")
+                .summary("the instances of a Manchester class expression").query(c -> c.ok(c.render().entities(
                 Inferences.instances(c.reference(), Syntax.classExpression(c.reference(), c.arg(0)), false)
                         .stream())));
-        table.command("QUERY CLASS IND").args("ind").optional("most specific only").query(c -> {
+        table.command("QUERY CLASS IND").args("ind").optional("most specific only")
+                .summary("the classes of the individual, optionally the most specific only").query(c -> {
             boolean direct = c.hasArg(1) && c.flag(1);
             return c.ok(c.render().entities(types(c.reference(), c.individual(0), direct).stream()));
         });
-        table.command("QUERY IND SAME").args("ind").query(c -> {
+        table.command("QUERY IND SAME").args("ind").summary("individuals equal to it").query(c -> {
             OWLNamedIndividual individual = c.individual(0);
             Set<OWLNamedIndividual> same = Inferences.union(
                     EntitySearcher.getSameIndividuals(individual, Inferences.closure(c.reference()))
@@ -56,14 +59,15 @@ final class Queries {
             same.remove(individual);
             return c.ok(c.render().entities(same.stream()));
         });
-        table.command("QUERY IND DATAPROP").args("ind").query(c -> {
+        table.command("QUERY IND DATAPROP").args("ind").summary("the data properties that have values for it").query(c -> {
             Reference reference = c.reference();
             OWLNamedIndividual individual = c.individual(0);
             Stream<OWLDataProperty> inferred = reference.ontology().dataPropertiesInSignature(Imports.INCLUDED)
                     .filter(p -> !dataValues(reference, p, individual).isEmpty());
             return c.ok(c.render().entities(inferred));
         });
-        table.command("QUERY IND OBJECTPROP").args("ind").query(c -> {
+        table.command("QUERY IND OBJECTPROP").args("ind")
+                .summary("the object properties that have values for it").query(c -> {
             Reference reference = c.reference();
             OWLNamedIndividual individual = c.individual(0);
             Stream<OWLObjectProperty> inferred = reference.ontology().objectPropertiesInSignature(Imports.INCLUDED)
@@ -73,18 +77,19 @@ final class Queries {
     }
 
     private static void registerClassQueries(CommandTable table) {
-        table.command("QUERY CLASS CLASS").args("class").query(c -> c.ok(c.render().entities(
+        table.command("QUERY CLASS CLASS").args("class").summary("subclasses, all levels").query(c -> c.ok(c.render().entities(
                 Inferences.subClasses(c.reference(), c.owlClass(0), false).stream())));
-        table.command("QUERY CLASS DL").args("class expression").query(c -> c.ok(c.render().entities(
+        table.command("QUERY CLASS DL").args("class expression")
+                .summary("the subclasses of a Manchester class expression").query(c -> c.ok(c.render().entities(
                 Inferences.subClasses(c.reference(), Syntax.classExpression(c.reference(), c.arg(0)), false)
                         .stream())));
-        classRelation(table, "QUERY CLASS SUPER", EntitySearcher::getSuperClasses,
+        classRelation(table, "QUERY CLASS SUPER", "superclasses", EntitySearcher::getSuperClasses,
                 (r, owlClass) -> r.getSuperClasses(owlClass, false).entities());
-        classRelation(table, "QUERY CLASS EQUIVALENT", EntitySearcher::getEquivalentClasses,
+        classRelation(table, "QUERY CLASS EQUIVALENT", "equivalent classes", EntitySearcher::getEquivalentClasses,
                 (r, owlClass) -> r.getEquivalentClasses(owlClass).entities());
-        classRelation(table, "QUERY CLASS DISJOINT", EntitySearcher::getDisjointClasses,
+        classRelation(table, "QUERY CLASS DISJOINT", "disjoint classes", EntitySearcher::getDisjointClasses,
                 (r, owlClass) -> r.getDisjointClasses(owlClass).entities());
-        table.command("QUERY CLASS RESTRICTIONS").args("class").query(c -> {
+        table.command("QUERY CLASS RESTRICTIONS").args("class").summary("its restrictions, Manchester syntax").query(c -> {
             OWLClass owlClass = c.owlClass(0);
             Stream<OWLClassExpression> definitions = Stream.concat(
                     EntitySearcher.getSuperClasses(owlClass, Inferences.closure(c.reference())),
@@ -98,10 +103,10 @@ final class Queries {
     }
 
     /** A query answering the named classes related to a class: asserted ones plus inferred ones. */
-    private static void classRelation(CommandTable table, String words,
+    private static void classRelation(CommandTable table, String words, String summary,
                                       BiFunction<OWLClass, Stream<OWLOntology>, Stream<OWLClassExpression>> asserted,
                                       BiFunction<OWLReasoner, OWLClass, Stream<OWLClass>> inferred) {
-        table.command(words).args("class").query(c -> {
+        table.command(words).args("class").summary(summary).query(c -> {
             OWLClass owlClass = c.owlClass(0);
             Set<OWLClass> related = Inferences.union(
                     asserted.apply(owlClass, Inferences.closure(c.reference()))
@@ -113,11 +118,13 @@ final class Queries {
     }
 
     private static void registerPropertyQueries(CommandTable table) {
-        table.command("QUERY OBJECTPROP IND").args("prop", "ind").query(c -> c.ok(c.render().entities(
+        table.command("QUERY OBJECTPROP IND").args("prop", "ind")
+                .summary("the individuals it is related to by the property").query(c -> c.ok(c.render().entities(
                 objectValues(c.reference(), c.objectProperty(0), c.individual(1)).stream())));
-        table.command("QUERY DATAPROP IND").args("prop", "ind").query(c -> c.ok(Rendering.literals(
+        table.command("QUERY DATAPROP IND").args("prop", "ind").summary("its values of the property").query(c -> c.ok(Rendering.literals(
                 dataValues(c.reference(), c.dataProperty(0), c.individual(1)))));
-        table.command("QUERY OBJECTPROP OBJECTPROP").args("prop").query(c -> {
+        table.command("QUERY OBJECTPROP OBJECTPROP").args("prop")
+                .summary("sub-properties of an object property").query(c -> {
             OWLObjectProperty property = c.objectProperty(0);
             Set<OWLObjectProperty> subs = Inferences.union(
                     EntitySearcher.getSubProperties(property, Inferences.closure(c.reference()))
@@ -127,7 +134,7 @@ final class Queries {
             subs.remove(property);
             return c.ok(c.render().entities(subs.stream()));
         });
-        table.command("QUERY DATAPROP DATAPROP").args("prop").query(c -> {
+        table.command("QUERY DATAPROP DATAPROP").args("prop").summary("sub-properties of a data property").query(c -> {
             OWLDataProperty property = c.dataProperty(0);
             Set<OWLDataProperty> subs = Inferences.union(
                     EntitySearcher.getSubProperties(property, Inferences.closure(c.reference()))

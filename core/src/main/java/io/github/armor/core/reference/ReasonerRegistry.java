@@ -38,8 +38,15 @@ public final class ReasonerRegistry {
         thread.setDaemon(true);
         return thread;
     });
+    // Where factory class names are looked up: the core's class path, plus plugin_dir's jars once set.
+    private static volatile ClassLoader classLoader = ReasonerRegistry.class.getClassLoader();
 
     private ReasonerRegistry() {}
+
+    /** Looks reasoner factory classes up in {@code loader} (the plugin directory's) from now on. */
+    public static void useClassLoader(ClassLoader loader) {
+        classLoader = loader;
+    }
 
     /**
      * What to add to a refusal by {@code refused}: the first other complete reasoner that starts
@@ -108,7 +115,7 @@ public final class ReasonerRegistry {
             return known.get();
         }
         try {
-            Class<?> type = Class.forName(canonicalName);
+            Class<?> type = Class.forName(canonicalName, true, classLoader);
             if (!OWLReasonerFactory.class.isAssignableFrom(type)) {
                 throw new ArmorException(ExitCode.REASONER_FAILED,
                         "reasoner '" + canonicalName + "' is a class but not an OWLReasonerFactory");
@@ -116,7 +123,8 @@ public final class ReasonerRegistry {
             return (OWLReasonerFactory) type.getDeclaredConstructor().newInstance();
         } catch (ClassNotFoundException e) {
             throw new ArmorException(ExitCode.REASONER_FAILED, "unknown reasoner '" + canonicalName
-                    + "': expected HERMIT, PELLET, JFACT, ELK or an OWLReasonerFactory class name");
+                    + "': expected HERMIT, PELLET, JFACT, ELK or an OWLReasonerFactory class name (on the core's"
+                    + " class path or in a jar of plugin_dir)");
         } catch (ReflectiveOperationException | LinkageError e) {
             throw new ArmorException(ExitCode.REASONER_FAILED,
                     "reasoner factory '" + canonicalName + "' could not be created: " + e, e);

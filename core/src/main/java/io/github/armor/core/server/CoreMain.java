@@ -1,23 +1,28 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.server;
 
-import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import io.github.armor.core.ArmorCore;
 import io.github.armor.core.api.CoreConfig;
+import io.github.armor.core.api.Setting;
+import io.github.armor.core.command.CommandTable;
+import io.github.armor.core.reference.ReasonerRegistry;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
+import java.util.Map;
 
 /**
  * Starts the core process: {@code java -jar armor-core.jar SOCKET_PATH CONFIG_JSON}. Restores
  * the references kept in the state directory, then prints one "ready" line on stdout once the
  * socket accepts connections, and exits when stdin closes, so the core never outlives the node
- * that started it.
+ * that started it. {@code java -jar armor-core.jar --catalogue [CONFIG_JSON]} prints the
+ * catalogue (commands, exit codes, settings; with plugin_dir's commands) and exits.
  */
 public final class CoreMain {
+    /** Exit status for a command line or configuration the core refuses. */
+    static final int USAGE = 2;
+
     private CoreMain() {}
 
     /** The line on stdout that tells the node why the core could not start (instead of the ready line). */
@@ -25,11 +30,32 @@ public final class CoreMain {
 
     public static void main(String[] args) throws IOException {
         ProcessLog.install();
-        if (args.length != 2) {
-            System.err.println("usage: java -jar armor-core.jar SOCKET_PATH CONFIG_JSON");
-            System.exit(2);
+        boolean catalogue = args.length >= 1 && args[0].equals("--catalogue");
+        if (!(catalogue && args.length <= 2) && args.length != 2) {
+            System.err.println("usage: java -jar armor-core.jar SOCKET_PATH CONFIG_JSON\n"
+                    + "       java -jar armor-core.jar --catalogue [CONFIG_JSON]");
+            System.exit(USAGE);
         }
-        CoreConfig config = config(JsonParser.parseString(args[1]).getAsJsonObject());
+        Map<Setting, Object> settings;
+        CommandTable commands;
+        try {
+            settings = SettingsJson.parse(args.length == 2 ? JsonParser.parseString(args[1]).getAsJsonObject()
+                    : new JsonObject());
+            ClassLoader plugins = Plugins.classLoader((String) settings.get(Setting.PLUGIN_DIR));
+            ReasonerRegistry.useClassLoader(plugins);
+            commands = CommandTable.load(plugins);
+        } catch (RuntimeException e) {
+            // The node reports this line as the reason the core did not start.
+            System.out.println(CANNOT_START + e.getMessage());
+            System.out.flush();
+            System.exit(USAGE);
+            return;
+        }
+        if (catalogue) {
+            System.out.println(Catalogue.text(commands));
+            return;
+        }
+        CoreConfig config = CoreConfig.fromSettings(settings);
         NetworkGuard.install(config);
         Thread watchParent = new Thread(() -> {
             try {
@@ -43,7 +69,7 @@ public final class CoreMain {
         }, "armor-parent-watch");
         watchParent.setDaemon(true);
         watchParent.start();
-        ArmorCore core = new ArmorCore(config);
+        ArmorCore core = new ArmorCore(config, commands);
         try {
             core.restoreState();
         } catch (RuntimeException e) {
@@ -53,41 +79,9 @@ public final class CoreMain {
             org.slf4j.LoggerFactory.getLogger(CoreMain.class).debug("start failed", e);
             System.exit(3);
         }
-        new CoreServer(core).serve(Path.of(args[0]), () -> {
+        new CoreServer(core, Catalogue.json(commands)).serve(Path.of(args[0]), () -> {
             System.out.println("ARMOR core ready on " + args[0]);
             System.out.flush();
         });
-    }
-
-    static CoreConfig config(JsonObject json) {
-        List<Path> dirs = new ArrayList<>();
-        JsonArray allowed = json.has("allowed_dirs") ? json.getAsJsonArray("allowed_dirs") : new JsonArray();
-        allowed.forEach(d -> dirs.add(Path.of(d.getAsString())));
-        return new CoreConfig(
-                !json.has("full_entity_iri") || json.get("full_entity_iri").getAsBoolean(),
-                json.has("default_reasoner") ? json.get("default_reasoner").getAsString() : "PELLET",
-                dirs,
-                json.has("web_loading") && json.get("web_loading").getAsBoolean(),
-                json.has("lock_wait_ms") ? json.get("lock_wait_ms").getAsLong() : 30_000,
-                json.has("reasoner_timeout_ms") ? json.get("reasoner_timeout_ms").getAsLong() : 0,
-                json.has("mount_lease_s") ? json.get("mount_lease_s").getAsLong() : 0,
-                durability(json),
-                new CoreConfig.Safeguards(
-                        json.has("sparql_timeout_ms") ? json.get("sparql_timeout_ms").getAsLong() : 30_000,
-                        json.has("sparql_federated") && json.get("sparql_federated").getAsBoolean(),
-                        json.has("ignore_missing_imports") && json.get("ignore_missing_imports").getAsBoolean(),
-                        json.has("strict_names") && json.get("strict_names").getAsBoolean()));
-    }
-
-    private static CoreConfig.Durability durability(JsonObject json) {
-        String stateDir = json.has("state_dir") ? json.get("state_dir").getAsString() : "";
-        if (stateDir.isBlank()) {
-            return CoreConfig.Durability.NONE;
-        }
-        return new CoreConfig.Durability(Path.of(stateDir),
-                !json.has("restore_state") || json.get("restore_state").getAsBoolean(),
-                !json.has("journal_fsync") || json.get("journal_fsync").getAsBoolean(),
-                json.has("checkpoint_every_changes") ? json.get("checkpoint_every_changes").getAsInt() : 1000,
-                json.has("checkpoint_every_s") ? json.get("checkpoint_every_s").getAsLong() : 60);
     }
 }

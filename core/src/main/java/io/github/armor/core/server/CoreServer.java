@@ -27,7 +27,8 @@ import org.slf4j.LoggerFactory;
  * carries many requests at once: each runs on its own worker thread and answers when done.
  *
  * <p>Requests: {@code {"id", "op": "directive", "directive": {...}}},
- * {@code {"id", "op": "list", "directives": [...]}}, {@code {"id", "op": "ping"}}.
+ * {@code {"id", "op": "list", "directives": [...]}}, {@code {"id", "op": "ping"}}, and the read-only
+ * {@code {"id", "op": "catalogue"}}, answered {@code {"id", "catalogue": {...}}} (see {@link Catalogue}).
  */
 public final class CoreServer {
     private static final Logger LOG = LoggerFactory.getLogger(CoreServer.class);
@@ -36,10 +37,12 @@ public final class CoreServer {
     private static final long WORKER_STACK_BYTES = 256L << 20;
 
     private final ArmorCore core;
+    private final JsonObject catalogue;
     private final ExecutorService workers = Executors.newCachedThreadPool(new WorkerThreads());
 
-    public CoreServer(ArmorCore core) {
+    public CoreServer(ArmorCore core, JsonObject catalogue) {
         this.core = core;
+        this.catalogue = catalogue;
     }
 
     /** Binds the socket, then calls {@code onReady} and serves until the process ends. */
@@ -91,6 +94,7 @@ public final class CoreServer {
                 case "list" -> reply.add("list",
                         WireCodec.listResponse(core.executeList(WireCodec.directives(request.getAsJsonArray("directives")))));
                 case "ping" -> reply.addProperty("pong", true);
+                case "catalogue" -> reply.add("catalogue", catalogue);
                 default -> reply.addProperty("error", "unknown op '" + op + "'");
             }
         } catch (RuntimeException | LinkageError | StackOverflowError e) {

@@ -1,0 +1,54 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""The core owns the catalogue; nothing else may disagree with it.
+
+The installed core is asked for its catalogue (``java -jar armor-core.jar --catalogue``); the
+generated catalogue.json the Python side reads, the exit-code enums and the tables of
+docs/commands.md must all say the same. A command added on one side only fails here.
+"""
+
+import importlib.util
+import json
+import pathlib
+
+from armor_contract import catalogue
+from armor_contract.exit_codes import ExitCode
+from armor_client import commands
+import pytest
+
+REPO = pathlib.Path(__file__).resolve().parents[1]
+_spec = importlib.util.spec_from_file_location('catalogue_tool', REPO / 'tools' / 'catalogue.py')
+tool = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(tool)
+
+
+@pytest.fixture(scope='module')
+def core_text():
+    return tool.core_catalogue_text(tool.core_jar())
+
+
+def test_the_python_catalogue_docs_and_exit_codes_agree_with_the_core(core_text):
+    found = tool.differences(core_text)
+    assert not found, '\n'.join(found)
+
+
+def test_every_core_command_is_parsed_and_completed_by_the_cli(core_text):
+    core = catalogue.parse(json.loads(core_text))
+    for command in core.commands:
+        assert commands.split_directive([*command.name.split(), 'x'])[0] == command
+        typed = command.name.split()
+        assert typed[-1] in commands.next_words(typed[:-1])
+
+
+def test_the_exit_code_enum_is_the_cores(core_text):
+    core = catalogue.parse(json.loads(core_text))
+    assert {(e.name, e.code) for e in core.exit_codes} == {(e.name, e.value) for e in ExitCode}
+
+
+def test_the_docs_table_shorthand_is_read_as_written():
+    assert sorted(tool._alternatives('ADD/REMOVE OBJECTPROP DOMAIN / RANGE')) == [
+        'ADD OBJECTPROP DOMAIN', 'ADD OBJECTPROP RANGE', 'REMOVE OBJECTPROP DOMAIN',
+        'REMOVE OBJECTPROP RANGE']
+    assert tool._alternatives('LOAD FILE [MOUNTED]') == ['LOAD FILE', 'LOAD FILE MOUNTED']
+    assert tool._alternatives('ADD CARDINALITY MIN (or ADD MIN CARDINALITY)') == [
+        'ADD MIN CARDINALITY', 'ADD CARDINALITY MIN']
+    assert tool._alternatives('MOUNT / UNMOUNT') == ['MOUNT', 'UNMOUNT']
