@@ -20,6 +20,8 @@ import java.time.Instant;
 import java.util.Objects;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.stream.Collectors;
@@ -34,10 +36,12 @@ import java.util.stream.Collectors;
  */
 public final class DirectiveLog {
     private static final int QUEUE_LINES = 10_000;
+    private static final long CLOSE_WAIT_S = 5;
     private static final int SHOWN_ARGUMENT_CHARS = 200;
 
     /** A line and where it goes, as decided when its directive ended. */
-    private record Line(String text, boolean toScreen, FileChannel toFile) {}
+    /** A line to write, or (text null) the signal to close {@code toFile} once the lines before it are written. */
+    private record Line(String text, boolean toScreen, FileChannel toFile, CountDownLatch closed) {}
 
     private final PrintStream screen;
     private volatile boolean screenOn;
@@ -69,7 +73,7 @@ public final class DirectiveLog {
                 + ": " + shown(directive.describe()) + " "
                 + directive.args().stream().map(DirectiveLog::shown).collect(Collectors.joining(", ", "[", "]"))
                 + " -> " + response.exitCode() + (response.success() ? "" : " " + shown(response.errorDescription()));
-        if (!queue.offer(new Line(line, toScreen, toFile))) {
+        if (!queue.offer(new Line(line, toScreen, toFile, null))) {
             dropped.incrementAndGet();
         }
     }
@@ -105,11 +109,28 @@ public final class DirectiveLog {
                     : new ArmorException(ExitCode.LOAD_FAILED, "cannot use log file '" + target + "': " + e, e);
         }
         startWriter();
-        close(file.getAndSet(channel));
+        closeAfterQueuedLines(file.getAndSet(channel));
     }
 
+    /** Stops writing to the file; the lines of directives answered before are in it when this returns. */
     public void closeFile() {
-        close(file.getAndSet(null));
+        closeAfterQueuedLines(file.getAndSet(null));
+    }
+
+    private void closeAfterQueuedLines(FileChannel channel) {
+        if (channel == null) {
+            return;
+        }
+        CountDownLatch closed = new CountDownLatch(1);
+        try {
+            queue.put(new Line(null, false, channel, closed));
+            if (!closed.await(CLOSE_WAIT_S, TimeUnit.SECONDS)) {
+                screen.println("the directive log file was still being written after " + CLOSE_WAIT_S + " s");
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            close(channel);
+        }
     }
 
     private static void refuseIfNotRegular(Path target) {
@@ -135,6 +156,11 @@ public final class DirectiveLog {
                 line = queue.take();
             } catch (InterruptedException e) {
                 return;
+            }
+            if (line.text() == null) {
+                close(line.toFile());
+                line.closed().countDown();
+                continue;
             }
             long lost = dropped.getAndSet(0);
             String droppedText = lost > 0 ? Instant.now() + " " + lost + " directive log line(s) dropped: the log could"
