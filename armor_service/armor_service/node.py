@@ -7,36 +7,30 @@ through, e.g. ``armor serve --ros-args -p default_reasoner:=PELLET -r __ns:=/rob
 """
 
 import concurrent.futures
+import difflib
 import os
 import sys
-import tempfile
 
 from armor_contract.exit_codes import ExitCode
 from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service import wire
 from armor_service.core_process import CoreProcess, CoreUnavailable
+from armor_service.parameters import all_parameters, Parameter
 import rclpy
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
+from rclpy.exceptions import InvalidParameterTypeException
 from rclpy.node import Node
-from rcl_interfaces.msg import ParameterDescriptor
-
-# Settings handed to the core at start; the names are the core's configuration keys.
-_CORE_SETTINGS = ('full_entity_iri', 'default_reasoner', 'allowed_dirs', 'web_loading',
-                  'lock_wait_ms', 'reasoner_timeout_ms', 'mount_lease_s', 'state_dir',
-                  'restore_state', 'journal_fsync', 'checkpoint_every_changes',
-                  'checkpoint_every_s', 'sparql_timeout_ms', 'sparql_federated',
-                  'ignore_missing_imports', 'strict_names')
-
 
 class ArmorService(Node):
     """Serves armor_interface_srv and armor_interface_serialized_srv."""
 
     def __init__(self):
         super().__init__('armor_service')
+        self._armor_parameters = {p.name: p for p in all_parameters()}
         self._declare_parameters()
-        settings = {name: self._value(name) for name in _CORE_SETTINGS}
+        settings = {p.name: self._value(p.name) for p in self._armor_parameters.values() if p.core}
         settings['state_dir'] = settings['state_dir'] or self._default_state_dir()
         self._core = CoreProcess(
             self._core_jar(), settings, jvm_options=tuple(self._value('jvm_options')),
@@ -152,50 +146,33 @@ class ArmorService(Node):
         return jar
 
     def _value(self, name):
-        return self.get_parameter(name).value
+        value = self.get_parameter(name).value
+        convert = self._armor_parameters[name].also_string if name in self._armor_parameters else None
+        return convert(value) if convert is not None else value
 
     def _declare_parameters(self) -> None:
-        home = os.path.expanduser('~')
-        defaults = {
-            'default_reasoner': ('PELLET', 'reasoner used when LOAD or CREATE names none'),
-            'full_entity_iri': (True, 'answer <full IRIs> (true) or short names (false)'),
-            'allowed_dirs': ([os.getcwd(), home, tempfile.gettempdir()],
-                             'LOAD FILE, SAVE and LOG FILE paths must lie inside these'),
-            'web_loading': (False, 'allow LOAD WEB and owl:imports from the web'),
-            'lock_wait_ms': (30000, 'longest wait for a reference another directive is using'),
-            'reasoner_timeout_ms': (0, 'time limit handed to the reasoners (0 = none)'),
-            'mount_lease_s': (0, 'release a mount whose holder sent nothing for this long'),
-            'state_dir': ('', 'journals and checkpoints of every reference (default: '
-                          '$XDG_DATA_HOME/armor_ros2/domain<ROS_DOMAIN_ID>/<node name>)'),
-            'restore_state': (True, 'restore the references found in state_dir at start; '
-                              'false deletes them for a clean start'),
-            'journal_fsync': (True, 'force every journal record to disk before acknowledging '
-                              '(survives power loss, not only a crash)'),
-            'checkpoint_every_changes': (1000, 'checkpoint a reference after this many records'),
-            'checkpoint_every_s': (60, '... or when it changed and its checkpoint is this old'),
-            'sparql_timeout_ms': (30000, 'default time limit of a SPARQL query, and the most one '
-                                  'may ask for (0 = none)'),
-            'sparql_federated': (False, 'let SPARQL SERVICE clauses query other endpoints '
-                                 '(opens network connections)'),
-            'ignore_missing_imports': (False, 'load an ontology whose owl:imports cannot be resolved, '
-                                       'listing them in error_description (default: refuse, 222)'),
-            'strict_names': (False, 'a QUERY naming an entity the reference does not know answers '
-                             '224 instead of an empty list (other commands create it, as in ARMOR)'),
-            'core_start_timeout_s': (600.0, 'longest wait for the core to start and restore'),
-            'request_timeout_s': (0.0, 'longest wait for the core per request (0 = none)'),
-            'core_jar': ('', 'path of armor-core.jar (default: $ARMOR_CORE_JAR)'),
-            'jvm_options': (['-Xmx4g', '-XX:+ExitOnOutOfMemoryError'],
-                            'options for the core JVM; out of memory restarts the core'),
-            'executor_threads': (16, 'directives answered at once'),
-            'preload_file': ('', 'ontology loaded at start (and after a core restart)'),
-            'preload_reference': ('default', 'reference name of the preloaded ontology'),
-            'preload_iri': ('', 'ontology IRI for plain names (empty: the file\'s own)'),
-            'preload_reasoner': ('', 'reasoner of the preloaded ontology (empty: default)'),
-            'preload_buffered_manipulation': (False, 'buffer changes until APPLY'),
-            'preload_buffered_reasoner': (False, 'reasoner sees changes only at REASON'),
-        }
-        for name, (default, description) in defaults.items():
-            self.declare_parameter(name, default, ParameterDescriptor(description=description))
+        """Declare every parameter, typed; refuse names no parameter has and values of other types."""
+        for parameter in self._armor_parameters.values():
+            try:
+                self.declare_parameter(parameter.name, parameter.initial(), parameter.descriptor())
+            except InvalidParameterTypeException as error:
+                raise RuntimeError(f'parameter {parameter.name} must be of type {parameter.type}: '
+                                   f'{error}') from error
+            if parameter.also_string is not None:
+                self._check_string_or_array(parameter)
+        unknown = sorted(set(self._parameter_overrides) - set(self._armor_parameters) - {'use_sim_time'})
+        if unknown:
+            hints = [f'{name} (did you mean {close[0]}?)' if close else name for name, close in
+                     ((n, difflib.get_close_matches(n, self._armor_parameters, 1)) for n in unknown)]
+            raise RuntimeError(f'unknown parameter(s): {", ".join(hints)}; see the parameter table '
+                               'of the README')
+
+    def _check_string_or_array(self, parameter: Parameter) -> None:
+        value = self.get_parameter(parameter.name).value
+        if not isinstance(value, str) and not (isinstance(value, (list, tuple)) and all(
+                isinstance(item, str) for item in value)):
+            raise RuntimeError(f'parameter {parameter.name} must be a string array or one string, '
+                               f'got {value!r}')
 
 
 def main(args=None):

@@ -16,8 +16,8 @@ import java.util.stream.Collectors;
  * never silently leaves the default in force.
  */
 public enum Setting {
-    DEFAULT_REASONER("default_reasoner", Type.STRING, "PELLET", "reasoner used when LOAD or CREATE names none"),
-    FULL_ENTITY_IRI("full_entity_iri", Type.BOOLEAN, true, "answer <full IRIs> (true) or short names (false)"),
+    DEFAULT_REASONER("default_reasoner", Type.STRING, "PELLET", "reasoner used when LOAD or CREATE names none (PELLET is Openllet: SWRL built-ins included)"),
+    FULL_ENTITY_IRI("full_entity_iri", Type.BOOLEAN, true, "answer entities as full IRIs in angle brackets (true) or as short names (false)"),
     ALLOWED_DIRS("allowed_dirs", Type.STRING_ARRAY, List.of(),
             "LOAD FILE, SAVE and LOG FILE paths, and every document an owl:imports resolves to, must lie inside"
                     + " these"),
@@ -38,7 +38,7 @@ public enum Setting {
     REASONER_TIMEOUT_MS("reasoner_timeout_ms", Type.INTEGER, 0L, "time limit handed to the reasoners (0 = none)"),
     MOUNT_LEASE_S("mount_lease_s", Type.INTEGER, 0L,
             "release a mount whose holder sent nothing for this long (0 = never)"),
-    STATE_DIR("state_dir", Type.STRING, "", "journals and checkpoints of every reference (empty: keep none)"),
+    STATE_DIR("state_dir", Type.STRING, "", "journals and checkpoints of every reference"),
     RESTORE_STATE("restore_state", Type.BOOLEAN, true,
             "restore the references found in state_dir at start; false deletes them for a clean start"),
     JOURNAL_FSYNC("journal_fsync", Type.BOOLEAN, true,

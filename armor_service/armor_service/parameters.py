@@ -1,0 +1,130 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""The node's parameters, each declared once: the core's settings and the node's own.
+
+The core's settings come from its catalogue (armor_contract's catalogue.json, checked against
+the core by tests/test_catalogue.py), so a setting added in Setting.java becomes a parameter
+without a line here. The node's own parameters (how it starts and supervises the core, what it
+preloads) are declared below in the same shape. Every parameter is typed; those not live are
+read-only. README's parameter table is generated from both lists (make catalogue).
+"""
+
+import os
+import shlex
+import tempfile
+from dataclasses import dataclass
+from typing import Any, Callable, Dict, List, Optional, Tuple
+
+from armor_contract import catalogue
+from rcl_interfaces.msg import ParameterDescriptor, ParameterType
+
+_ROS_TYPES = {
+    'boolean': ParameterType.PARAMETER_BOOL, 'integer': ParameterType.PARAMETER_INTEGER,
+    'double': ParameterType.PARAMETER_DOUBLE, 'string': ParameterType.PARAMETER_STRING,
+    'string_array': ParameterType.PARAMETER_STRING_ARRAY,
+}
+
+
+def path_list(value: Any) -> List[str]:
+    """A directory list as users type it: a string array, one path, or paths joined by ':'."""
+    if isinstance(value, str):
+        return [part for part in value.split(os.pathsep) if part.strip()]
+    return list(value)
+
+
+def option_list(value: Any) -> List[str]:
+    """Command-line options as users type them: a string array, or one string split as a shell does."""
+    if isinstance(value, str):
+        return shlex.split(value)
+    return list(value)
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One parameter of the node.
+
+    Attributes:
+        name: the parameter's name (for a core setting, the setting's key).
+        type: a catalogue type: boolean, integer, double, string, string_array.
+        default: its default (a callable computes it when the node starts).
+        description: what it sets.
+        read_only: whether it is read only at start (changing it later has no effect).
+        core: whether it is handed to the core as a setting.
+        also_string: a string is accepted too and converted by this function.
+        default_text: how the README shows a default computed at start.
+    """
+
+    name: str
+    type: str
+    default: Any
+    description: str
+    read_only: bool = True
+    core: bool = False
+    also_string: Optional[Callable[[Any], List[str]]] = None
+    default_text: Optional[str] = None
+
+    def descriptor(self) -> ParameterDescriptor:
+        """The ROS descriptor: type, meaning, read-only; dynamically typed where a string is also taken."""
+        descriptor = ParameterDescriptor(description=self.description, read_only=self.read_only)
+        if self.also_string is not None:
+            descriptor.dynamic_typing = True
+        else:
+            descriptor.type = _ROS_TYPES[self.type]
+        return descriptor
+
+    def initial(self) -> Any:
+        """The default, computed now if it is computed at start."""
+        return self.default() if callable(self.default) else self.default
+
+
+# Defaults that suit a node better than the core's own (which suit tests and embedding).
+_NODE_DEFAULTS: Dict[str, Tuple[Callable[[], Any], str]] = {
+    'allowed_dirs': (lambda: [os.getcwd(), os.path.expanduser('~'), tempfile.gettempdir()],
+                     'working dir, home, temp dir'),
+    'state_dir': (lambda: '', '`$XDG_DATA_HOME/armor_ros2/domain<ID>/<node name>`'),
+}
+_NODE_DESCRIPTIONS = {
+    'allowed_dirs': ' (a string array, one path, or paths joined by ":")',
+    'state_dir': ' (empty: the default directory)',
+}
+_ALSO_STRING = {'allowed_dirs': path_list}
+
+
+def core_parameters() -> Tuple[Parameter, ...]:
+    """One parameter per setting of the core's catalogue."""
+    made = []
+    for setting in catalogue.load().settings:
+        default, text = _NODE_DEFAULTS.get(setting.key, (setting.default, None))
+        made.append(Parameter(
+            setting.key, setting.type, default,
+            setting.description + _NODE_DESCRIPTIONS.get(setting.key, ''),
+            read_only=setting.read_only, core=True, also_string=_ALSO_STRING.get(setting.key),
+            default_text=text))
+    return tuple(made)
+
+
+NODE_PARAMETERS: Tuple[Parameter, ...] = (
+    Parameter('core_start_timeout_s', 'double', 600.0,
+              'longest wait for the core to start and restore its references'),
+    Parameter('request_timeout_s', 'double', 0.0,
+              'longest wait for the core per request (0 = none)', read_only=False),
+    Parameter('core_jar', 'string', '', "path of the core's jar (empty: $ARMOR_CORE_JAR)",
+              default_text='`$ARMOR_CORE_JAR`'),
+    Parameter('jvm_options', 'string_array', ['-Xmx4g', '-XX:+ExitOnOutOfMemoryError'],
+              'options of the core JVM, as a string array or one string split as a shell does; '
+              'out of memory restarts the core', also_string=option_list),
+    Parameter('executor_threads', 'integer', 16, 'directives answered at once'),
+    Parameter('preload_file', 'string', '', 'ontology loaded at start and after a core restart'),
+    Parameter('preload_reference', 'string', 'default',
+              'reference name of the preloaded ontology (make run uses robotics)'),
+    Parameter('preload_iri', 'string', '', "its ontology IRI (empty: the file's own)"),
+    Parameter('preload_reasoner', 'string', '', 'its reasoner (empty: default_reasoner)'),
+    Parameter('preload_buffered_manipulation', 'boolean', False,
+              'its changes wait for APPLY'),
+    Parameter('preload_buffered_reasoner', 'boolean', False,
+              'its reasoner sees changes only at REASON'),
+)
+
+
+def all_parameters() -> Tuple[Parameter, ...]:
+    """The core's settings, then the node's own parameters."""
+    return core_parameters() + NODE_PARAMETERS
