@@ -22,5 +22,8 @@ setup(
         'console_scripts': [
             'armor = armor_client.cli:main',
         ],
+        # The verbs of the armor command; other packages add theirs to the same group.
+        'armor.verbs': [f'{verb} = armor_client.cli.{verb}' for verb in (
+            'call', 'load', 'query', 'refs', 'save', 'shell', 'sparql')],
     },
 )

@@ -23,5 +23,9 @@ setup(
         'console_scripts': [
             'armor_service = armor_service.node:main',
         ],
+        # The armor command (armor_client) finds its verbs here: serve starts this node.
+        'armor.verbs': [
+            'serve = armor_service.serve_verb',
+        ],
     },
 )

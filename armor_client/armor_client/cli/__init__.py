@@ -1,12 +1,29 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-"""The ``armor`` command: one verb per module, each with add_arguments() and run()."""
+"""The ``armor`` command. Its verbs are entry points of the group ``armor.verbs``.
+
+A verb is a module: its docstring (the first line is the summary), ``add_arguments(parser)``,
+``run(args) -> int``, and optionally ``TRAILING``, a word after which the command line goes to
+the verb unparsed as ``args.directive_args`` (``--`` for directive arguments, ``--ros-args``
+for ROS arguments). armor_client registers call, load, query, sparql, save, refs and shell;
+armor_service registers serve, so this package never imports the server. Another package
+adds a verb by declaring one more entry point in its setup.py.
+"""
 
 import argparse
-import importlib
 import signal
 import sys
+from importlib.metadata import entry_points, EntryPoint
+from typing import Dict
 
-VERBS = ('serve', 'call', 'load', 'query', 'sparql', 'save', 'refs', 'shell')
+VERB_GROUP = 'armor.verbs'
+
+
+def verbs() -> Dict[str, EntryPoint]:
+    """Every installed verb, by name (nothing is imported yet)."""
+    return {point.name: point for point in entry_points(group=VERB_GROUP)}
+
+
+VERBS = tuple(sorted(verbs()))
 
 
 def _version() -> str:
@@ -25,12 +42,13 @@ def build_parser(only: str = '') -> argparse.ArgumentParser:
         'service. Run "armor VERB --help" for the details of a verb.')
     parser.add_argument('--version', action='version', version=f'armor {_version()}',
                         help='print the version of ARMOR for ROS 2 and exit')
-    verbs = parser.add_subparsers(dest='verb', metavar='VERB', required=True)
-    for name in ([only] if only in VERBS else VERBS):
-        module = importlib.import_module(f'armor_client.cli.{name}')
+    subparsers = parser.add_subparsers(dest='verb', metavar='VERB', required=True)
+    installed = verbs()
+    for name in ([only] if only in installed else sorted(installed)):
+        module = installed[name].load()
         summary = module.__doc__.strip().splitlines()[0]
-        sub = verbs.add_parser(name, help=summary, description=module.__doc__.strip(),
-                               formatter_class=argparse.RawDescriptionHelpFormatter)
+        sub = subparsers.add_parser(name, help=summary, description=module.__doc__.strip(),
+                                    formatter_class=argparse.RawDescriptionHelpFormatter)
         module.add_arguments(sub)
         sub.set_defaults(run=module.run)
     return parser
@@ -38,15 +56,15 @@ def build_parser(only: str = '') -> argparse.ArgumentParser:
 
 def main(argv=None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
-    # After a lone "--" come directive arguments, after "--ros-args" ROS arguments: either may
-    # start with "-", so they bypass argparse.
+    # After the verb's marker come arguments that may start with "-": they bypass argparse.
     trailing = []
-    marker = {'call': '--', 'query': '--', 'serve': '--ros-args'}.get(argv[0] if argv else '')
+    point = verbs().get(argv[0]) if argv else None
+    marker = getattr(point.load(), 'TRAILING', None) if point is not None else None
     if marker in argv:
         split = argv.index(marker)
         argv, trailing = argv[:split], argv[split + (marker == '--'):]
     # Only the verb's own module: the others import rclpy, which a relayed call never needs.
-    args = build_parser(argv[0] if argv and argv[0] in VERBS else '').parse_args(argv)
+    args = build_parser(point.name if point is not None else '').parse_args(argv)
     args.directive_args = trailing
     try:
         return args.run(args)

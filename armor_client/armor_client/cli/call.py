@@ -27,6 +27,9 @@ from armor_client.cli import call_relay
 SERVICE = 'armor_interface_srv'
 
 
+# Directive arguments follow a lone '--' (they may start with '-').
+TRAILING = '--'
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('reference', metavar='REF', help='reference name, "-" for none')
     parser.add_argument('words', nargs='+', metavar='COMMAND [PRIMARY [SECONDARY]]',

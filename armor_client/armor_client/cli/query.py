@@ -23,6 +23,9 @@ from armor_client.cli.common import (add_connection_arguments, connect, print_an
 from armor_client.errors import error_for
 
 
+# Directive arguments follow a lone '--' (they may start with '-').
+TRAILING = '--'
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Declare the options of armor query.
 

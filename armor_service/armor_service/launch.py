@@ -10,7 +10,7 @@ from typing import Optional, Sequence
 
 
 class ArmorNodeProcess:
-    """`armor serve --ros-args ...` running in the background, its output in a log file.
+    """The ARMOR node (`armor serve --ros-args ...`) running in the background, its output in a log file.
 
     Args:
         log_path: where the node's stdout and stderr go.
@@ -29,7 +29,7 @@ class ArmorNodeProcess:
             ros_args += ['-p', f'state_dir:={self.log_path.parent / "state"}']
         self._log = open(self.log_path, 'w')
         self.process = subprocess.Popen(
-            [sys.executable, '-m', 'armor_client.cli', 'serve', '--ros-args', *ros_args],
+            [sys.executable, '-m', 'armor_service.node', '--ros-args', *ros_args],
             stdout=self._log, stderr=subprocess.STDOUT, cwd=cwd)
 
     def core_pid(self, wait_s: float = 60.0) -> int:

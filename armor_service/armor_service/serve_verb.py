@@ -8,6 +8,10 @@ ROS arguments pass through, for example:
 
 import argparse
 
+# Registered by armor_service as the verb "serve" of the armor command (entry point group
+# armor.verbs): the client package that owns the command never imports the server.
+TRAILING = '--ros-args'
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.epilog = 'Everything from --ros-args on is handed to the node unchanged.'
