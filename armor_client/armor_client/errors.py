@@ -9,7 +9,7 @@ usually does about them, so ``except ArmorUnknownReferenceError`` reads better t
 codes; every one of them is still an ``ArmorServiceInternalError``.
 """
 
-from typing import Any, Dict, Optional, Type
+from typing import Any, Dict, List, Optional, Type
 
 
 class ArmorError(Exception):
@@ -51,6 +51,11 @@ class ArmorServiceInternalError(ArmorError):
             the client itself failed before anything was sent.
         timeout: the response's timeout flag (a time limit of the service was reached).
         response: the whole ArmorDirectiveRes, when there is one.
+
+    Attributes:
+        index: for a failed atomic list, the position of the directive that failed (None when
+            the whole list was rolled back without one failing).
+        responses: for a failed atomic list, every directive's response.
     """
 
     def __init__(self, description: str, exit_code: Optional[int] = None, timeout: bool = False,
@@ -58,10 +63,12 @@ class ArmorServiceInternalError(ArmorError):
         super().__init__(description, exit_code)
         self.timeout = timeout
         self.response = response
+        self.index: Optional[int] = None
+        self.responses: List[Any] = []
 
     @property
     def code(self) -> Optional[int]:
-        """The exit code (the attribute name of ROS 1 armor_api's exceptions)."""
+        """The exit code, by the attribute name of ROS 1 armor_api's exceptions."""
         return self.exit_code
 
 
@@ -70,8 +77,11 @@ class ArmorMountError(ArmorServiceInternalError):
 
 
 class ArmorArgumentError(ArmorServiceInternalError):
-    """The directive itself is wrong: 101, 201, 202, 205, 207, 208, 215, 221 (too large) or 223
-    (a federated SPARQL query the node does not allow)."""
+    """The directive itself is wrong.
+
+    Codes 101, 201, 202, 205, 207, 208, 215, 221 (too large) or 223 (a federated SPARQL query
+    the node does not allow).
+    """
 
 
 class ArmorUnknownReferenceError(ArmorServiceInternalError):

@@ -1,16 +1,19 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 """The commands of the contract as methods, shared by the sync, asyncio and batch clients.
 
-``Manipulations`` and ``Queries`` only build directives and say how to read the answer; the
-class that mixes them in decides what "send" means through ``_execute``: Reference sends at
-once and returns the value, AsyncReference returns an awaitable of it, and Batch queues the
-directive for one atomic list. Every method therefore ends in ``return self._execute(...)``.
+``Manipulations``, ``Queries`` and ``ReferenceCommands`` only build directives and say how to
+read the answer; the class that mixes them in decides what "send" means through
+``_execute``: Reference sends at once and returns the value, AsyncReference returns an
+awaitable of it, and Batch queues the directive for one atomic list. ``SessionCommands`` does
+the same for the directives of a session (loading, the utilities) through ``_session``, for
+Armor and AsyncArmor. Every method therefore ends in ``return self._execute(...)`` or
+``return self._session(...)``.
 """
 
 import enum
 import re
 from dataclasses import dataclass, field
-from typing import Any, Callable, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 from armor_client.values import answer_value, entity_iri, short_name, typed_argument, Value
 
@@ -71,6 +74,46 @@ def word(value: Union[str, enum.Enum]) -> str:
 _BRACKETED_IRI = re.compile(r'<([^<>\s]+)>')
 
 
+def sparql_cell(text: str, iris: bool) -> Optional[Value]:
+    """One SPARQL cell, decoded.
+
+    None when unbound, a bool for true/false (ASK), a blank node as is, else a literal's value
+    or an entity's name.
+    """
+    if not text:
+        return None
+    if text in ('true', 'false'):
+        return text == 'true'
+    if text.startswith('_:'):
+        return text
+    return answer_value(text, iris)
+
+
+def sparql_rows(items: Sequence[Any], iris: bool) -> List[Dict[str, Optional[Value]]]:
+    """FORMATTED SPARQL items as one dict per row (an item with an empty key ends a row).
+
+    The one decoder of SPARQL rows: the client's answers and the command line's tables.
+
+    Args:
+        items: sparql_queried_objects (key/value items).
+        iris: give entities as full IRIs instead of short names.
+
+    Returns:
+        The rows, variable -> value, in the order the core sent them.
+    """
+    rows: List[Dict[str, Optional[Value]]] = []
+    row: Dict[str, Optional[Value]] = {}
+    for item in items:
+        if not item.key:
+            rows.append(row)
+            row = {}
+        else:
+            row[item.key] = sparql_cell(item.value, iris)
+    if row:
+        rows.append(row)
+    return rows
+
+
 class Answers:
     """How to read answers: entities as short names, or as IRIs when ``iris`` is True."""
 
@@ -86,7 +129,7 @@ class Answers:
         return [self.entity(answer) for answer in response.queried_objects]
 
     def values(self, response: Any) -> List[Value]:
-        """queried_objects as Python values (literals converted, entities named)."""
+        """queried_objects as Python values: literals converted, entities named."""
         return [answer_value(answer, self.iris) for answer in response.queried_objects]
 
     def expressions(self, response: Any) -> List[str]:
@@ -98,27 +141,8 @@ class Answers:
 
     def rows(self, response: Any) -> SparqlRows:
         """sparql_queried_objects (FORMATTED) as one dict per row; unbound variables are None."""
-        rows: List[dict] = []
-        row: dict = {}
-        for item in response.sparql_queried_objects:
-            if not item.key:
-                rows.append(row)
-                row = {}
-            else:
-                row[item.key] = self.cell(item.value)
-        if row:
-            rows.append(row)
-        return SparqlRows(rows, response.timeout)
-
-    def cell(self, text: str) -> Optional[Value]:
-        """One SPARQL cell: None when unbound, a blank node as is, else a value or a name."""
-        if not text:
-            return None
-        if text in ('true', 'false'):
-            return text == 'true'
-        if text.startswith('_:'):
-            return text
-        return answer_value(text, self.iris)
+        return SparqlRows(sparql_rows(response.sparql_queried_objects, self.iris),
+                          response.timeout)
 
     @staticmethod
     def lines(response: Any) -> SparqlRows:
@@ -875,7 +899,7 @@ class Queries:
             One dict per row, variable -> value (None when unbound); an ASK answers
             ``[{'ASK': True}]`` or ``[{'ASK': False}]``.
         """
-        args = [query] if timeout_ms is None else [query, int(timeout_ms)]
+        args: List[Any] = [query] if timeout_ms is None else [query, int(timeout_ms)]
         return self._execute(('QUERY', 'SPARQL', 'FORMATTED'), args, self.answers.rows)
 
     def sparql_lines(self, query: str, timeout_ms: Optional[int] = None) -> SparqlRows:
@@ -889,7 +913,7 @@ class Queries:
             One string per row: the value alone for one variable, ``a=...; b=...`` for
             several, ``true``/``false`` for ASK.
         """
-        args = [query] if timeout_ms is None else [query, int(timeout_ms)]
+        args: List[Any] = [query] if timeout_ms is None else [query, int(timeout_ms)]
         return self._execute(('QUERY', 'SPARQL', ''), args, Answers.lines)
 
     def ask(self, query: str) -> bool:
@@ -953,3 +977,159 @@ class ReferenceCommands:
         Raises ArmorMountError (203) when this client does not hold the mount.
         """
         return self._execute(('UNMOUNT', '', ''), [], Answers.nothing)
+
+
+def reasoning_args(iri: str, buffered_manipulation: bool, reasoner: Union[Reasoner, str],
+                   buffered_reasoner: bool) -> List[str]:
+    """The arguments of CREATE, which are also the last four of LOAD FILE and LOAD WEB."""
+    return [iri, str(bool(buffered_manipulation)).lower(), word(reasoner),
+            str(bool(buffered_reasoner)).lower()]
+
+
+def load_args(source: str, iri: str, buffered_manipulation: bool, reasoner: Union[Reasoner, str],
+              buffered_reasoner: bool) -> List[str]:
+    """The five arguments of LOAD FILE and LOAD WEB."""
+    return [source, *reasoning_args(iri, buffered_manipulation, reasoner, buffered_reasoner)]
+
+
+class SessionCommands:
+    """Loading references and the utilities that need none: the directives of a session.
+
+    ``_session(reference, words, args, parse)`` sends (Armor) or returns an awaitable of
+    (AsyncArmor) ``parse(response)``, raising ArmorServiceInternalError (a subclass by exit
+    code) when ARMOR refuses the directive. ``_loaded`` makes the Reference object of the
+    session's kind for a reference just loaded.
+    """
+
+    def _session(self, reference: str, words: Words, args: Sequence[Any], parse: Parser) -> Any:
+        raise NotImplementedError
+
+    def _loaded(self, name: str, response: Any) -> Any:
+        raise NotImplementedError
+
+    def load_file(self, name: str, path: str, iri: str = '', *,
+                  reasoner: Union[Reasoner, str] = '', buffered_manipulation: bool = False,
+                  buffered_reasoner: bool = False, mount: bool = False) -> Any:
+        """Load an ontology file as a new reference (LOAD FILE [MOUNTED]).
+
+        Loading a name that is loaded from the same file reuses it, as ARMOR did.
+
+        Args:
+            name: the reference name.
+            path: the file, as the node sees it (inside its allowed_dirs).
+            iri: the ontology IRI that plain names resolve against ('' = the file's own).
+            reasoner: HERMIT, PELLET, JFACT, ELK or '' for the node's default.
+            buffered_manipulation: queue changes until apply() or reason().
+            buffered_reasoner: the reasoner sees changes only at reason().
+            mount: also mount this client on it.
+
+        Returns:
+            The Reference (AsyncReference from AsyncArmor).
+
+        Raises:
+            ArmorFileError: the file cannot be read or lies outside allowed_dirs, or the name
+                is loaded from another source.
+            ArmorReasonerError: the reasoner cannot be created.
+        """
+        return self._session(name, ('LOAD', 'FILE', 'MOUNTED' if mount else ''),
+                             load_args(path, iri, buffered_manipulation, reasoner,
+                                       buffered_reasoner),
+                             lambda response: self._loaded(name, response))
+
+    def load_web(self, name: str, url: str, iri: str = '', *,
+                 reasoner: Union[Reasoner, str] = '', buffered_manipulation: bool = False,
+                 buffered_reasoner: bool = False, mount: bool = False) -> Any:
+        """Load an ontology from a URL as a new reference (LOAD WEB [MOUNTED]).
+
+        The node must run with ``web_loading:=true``.
+
+        Args:
+            name: the reference name.
+            url: where the ontology is.
+            iri: as for load_file.
+            reasoner: as for load_file.
+            buffered_manipulation: as for load_file.
+            buffered_reasoner: as for load_file.
+            mount: as for load_file.
+
+        Returns:
+            The Reference (AsyncReference from AsyncArmor).
+
+        Raises:
+            ArmorFileError: web loading is off (218) or the download failed.
+        """
+        return self._session(name, ('LOAD', 'WEB', 'MOUNTED' if mount else ''),
+                             load_args(url, iri, buffered_manipulation, reasoner,
+                                       buffered_reasoner),
+                             lambda response: self._loaded(name, response))
+
+    def create(self, name: str, iri: str, *, reasoner: Union[Reasoner, str] = '',
+               buffered_manipulation: bool = False, buffered_reasoner: bool = False) -> Any:
+        """Create a reference holding a new, empty ontology (CREATE).
+
+        Args:
+            name: the reference name.
+            iri: the ontology IRI (plain names resolve against it).
+            reasoner: as for load_file.
+            buffered_manipulation: as for load_file.
+            buffered_reasoner: as for load_file.
+
+        Returns:
+            The Reference (AsyncReference from AsyncArmor).
+        """
+        return self._session(name, ('CREATE', '', ''),
+                             reasoning_args(iri, buffered_manipulation, reasoner,
+                                            buffered_reasoner),
+                             lambda response: self._loaded(name, response))
+
+    def references(self) -> List[str]:
+        """The names of the loaded references, GET ALL REFS.
+
+        Returns:
+            The names.
+        """
+        return self._session('', ('GET', 'ALL', 'REFS'), [],
+                             lambda response: list(response.queried_objects))
+
+    def load_progress(self) -> List[str]:
+        """The LOADs in flight, GET LOAD PROGRESS.
+
+        Returns:
+            One line per LOAD: reference, phase, bytes read, bytes in all, elapsed ms.
+        """
+        return self._session('', ('GET', 'LOAD', 'PROGRESS'), [],
+                             lambda response: list(response.queried_objects))
+
+    def mounted_by(self, reference: str) -> Optional[str]:
+        """The client that holds a reference's mount (GET REF CLIENT).
+
+        Args:
+            reference: the reference name.
+
+        Returns:
+            The client name, or None when nobody holds it.
+
+        Raises:
+            ArmorUnknownReferenceError: no such reference.
+        """
+        return self._session('', ('GET', 'REF', 'CLIENT'), [reference],
+                             lambda response: (response.queried_objects[0]
+                                               if response.queried_objects else None))
+
+    def log_to_screen(self, on: bool) -> None:
+        """Turn the node's logging of directives to its screen on or off (LOG SCREEN ON/OFF).
+
+        Args:
+            on: True to log.
+        """
+        return self._session('', ('LOG', 'SCREEN', 'ON' if on else 'OFF'), [], Answers.nothing)
+
+    def log_to_file(self, path: Optional[str]) -> None:
+        """Log directives to a file on the node's machine, or stop (LOG FILE ON/OFF).
+
+        Args:
+            path: the log file (inside the node's allowed_dirs); None stops logging to a file.
+        """
+        if path is None:
+            return self._session('', ('LOG', 'FILE', 'OFF'), [], Answers.nothing)
+        return self._session('', ('LOG', 'FILE', 'ON'), [path], Answers.nothing)

@@ -11,12 +11,12 @@
 
 import contextlib
 import os
-from typing import Any, Iterator, List, Optional, Sequence, Union
+from typing import Any, Iterator, Optional, Sequence
 
 from armor_client.batch import Batch
 from armor_client.errors import ArmorMountError, error_for
-from armor_client.operations import (Answers, Manipulations, Queries, Reasoner, ReferenceCommands,
-                                     word, Words)
+from armor_client.operations import (Answers, Manipulations, Parser, Queries, ReferenceCommands,
+                                     SessionCommands, Words)
 from armor_client.transport import ArmorTransport, directive
 from armor_msgs.msg import ArmorDirectiveRes
 from rclpy.node import Node
@@ -27,20 +27,7 @@ def default_client_name() -> str:
     return f'armor_py_{os.getpid()}'
 
 
-def reasoning_args(iri: str, buffered_manipulation: bool, reasoner: Union[Reasoner, str],
-                   buffered_reasoner: bool) -> List[str]:
-    """The arguments of CREATE, which are also the last four of LOAD FILE and LOAD WEB."""
-    return [iri, str(bool(buffered_manipulation)).lower(), word(reasoner),
-            str(bool(buffered_reasoner)).lower()]
-
-
-def load_args(source: str, iri: str, buffered_manipulation: bool, reasoner: Union[Reasoner, str],
-              buffered_reasoner: bool) -> List[str]:
-    """The five arguments of LOAD FILE and LOAD WEB."""
-    return [source, *reasoning_args(iri, buffered_manipulation, reasoner, buffered_reasoner)]
-
-
-class Armor:
+class Armor(SessionCommands):
     """A connection to one ARMOR node, speaking as one client.
 
     Args:
@@ -76,123 +63,6 @@ class Armor:
             A Reference; nothing is sent until a method is called.
         """
         return Reference(self, name, self.iris if iris is None else iris)
-
-    def load_file(self, name: str, path: str, iri: str = '', *,
-                  reasoner: Union[Reasoner, str] = '', buffered_manipulation: bool = False,
-                  buffered_reasoner: bool = False, mount: bool = False) -> 'Reference':
-        """Load an ontology file as a new reference (LOAD FILE [MOUNTED]).
-
-        Loading a name that is loaded from the same file reuses it, as ARMOR did.
-
-        Args:
-            name: the reference name.
-            path: the file, as the node sees it (inside its allowed_dirs).
-            iri: the ontology IRI that plain names resolve against ('' = the file's own).
-            reasoner: HERMIT, PELLET, JFACT, ELK or '' for the node's default.
-            buffered_manipulation: queue changes until apply() or reason().
-            buffered_reasoner: the reasoner sees changes only at reason().
-            mount: also mount this client on it.
-
-        Returns:
-            The Reference.
-
-        Raises:
-            ArmorFileError: the file cannot be read or lies outside allowed_dirs, or the name
-                is loaded from another source.
-            ArmorReasonerError: the reasoner cannot be created.
-        """
-        arguments = load_args(path, iri, buffered_manipulation, reasoner, buffered_reasoner)
-        spec = 'MOUNTED' if mount else ''
-        response = self._require(self.call(name, 'LOAD', 'FILE', spec, arguments))
-        return self._loaded(name, response)
-
-    def load_web(self, name: str, url: str, iri: str = '', *,
-                 reasoner: Union[Reasoner, str] = '', buffered_manipulation: bool = False,
-                 buffered_reasoner: bool = False, mount: bool = False) -> 'Reference':
-        """Load an ontology from a URL as a new reference (LOAD WEB [MOUNTED]).
-
-        The node must run with ``web_loading:=true``.
-
-        Args:
-            name: the reference name.
-            url: where the ontology is.
-            iri: as for load_file.
-            reasoner: as for load_file.
-            buffered_manipulation: as for load_file.
-            buffered_reasoner: as for load_file.
-            mount: as for load_file.
-
-        Returns:
-            The Reference.
-
-        Raises:
-            ArmorFileError: web loading is off (218) or the download failed.
-        """
-        arguments = load_args(url, iri, buffered_manipulation, reasoner, buffered_reasoner)
-        spec = 'MOUNTED' if mount else ''
-        response = self._require(self.call(name, 'LOAD', 'WEB', spec, arguments))
-        return self._loaded(name, response)
-
-    def create(self, name: str, iri: str, *, reasoner: Union[Reasoner, str] = '',
-               buffered_manipulation: bool = False,
-               buffered_reasoner: bool = False) -> 'Reference':
-        """Create a reference holding a new, empty ontology (CREATE).
-
-        Args:
-            name: the reference name.
-            iri: the ontology IRI (plain names resolve against it).
-            reasoner: as for load_file.
-            buffered_manipulation: as for load_file.
-            buffered_reasoner: as for load_file.
-
-        Returns:
-            The Reference.
-        """
-        arguments = reasoning_args(iri, buffered_manipulation, reasoner, buffered_reasoner)
-        response = self._require(self.call(name, 'CREATE', '', '', arguments))
-        return self._loaded(name, response)
-
-    def references(self) -> List[str]:
-        """The names of the loaded references (GET ALL REFS).
-
-        Returns:
-            The names.
-        """
-        return list(self._require(self.call('', 'GET', 'ALL', 'REFS')).queried_objects)
-
-    def mounted_by(self, reference: str) -> Optional[str]:
-        """The client that holds a reference's mount (GET REF CLIENT).
-
-        Args:
-            reference: the reference name.
-
-        Returns:
-            The client name, or None when nobody holds it.
-
-        Raises:
-            ArmorUnknownReferenceError: no such reference.
-        """
-        holders = self._require(self.call('', 'GET', 'REF', 'CLIENT', [reference]))
-        return holders.queried_objects[0] if holders.queried_objects else None
-
-    def log_to_screen(self, on: bool) -> None:
-        """Turn the node's logging of directives to its screen on or off (LOG SCREEN ON/OFF).
-
-        Args:
-            on: True to log.
-        """
-        self._require(self.call('', 'LOG', 'SCREEN', 'ON' if on else 'OFF'))
-
-    def log_to_file(self, path: Optional[str]) -> None:
-        """Log directives to a file on the node's machine, or stop (LOG FILE ON/OFF).
-
-        Args:
-            path: the log file (inside the node's allowed_dirs); None stops logging to a file.
-        """
-        if path is None:
-            self._require(self.call('', 'LOG', 'FILE', 'OFF'))
-        else:
-            self._require(self.call('', 'LOG', 'FILE', 'ON', [path]))
 
     def call(self, reference: str, command: str, primary: str = '', secondary: str = '',
              args: Sequence[Any] = ()) -> ArmorDirectiveRes:
@@ -231,11 +101,11 @@ class Armor:
         reference.consistent = response.is_consistent
         return reference
 
-    @staticmethod
-    def _require(response: ArmorDirectiveRes) -> ArmorDirectiveRes:
+    def _session(self, reference: str, words: Words, args: Sequence[Any], parse: Parser) -> Any:
+        response = self.call(reference, *words, args)
         if not response.success:
             raise error_for(response)
-        return response
+        return parse(response)
 
 
 class Reference(Manipulations, Queries, ReferenceCommands):

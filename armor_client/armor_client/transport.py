@@ -9,7 +9,7 @@ import itertools
 import os
 import threading
 import time
-from typing import Optional, Sequence
+from typing import Any, Optional, Sequence, Set
 
 from armor_client.errors import ArmorCallTimeout, ArmorServiceCallError
 from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
@@ -43,7 +43,7 @@ class ArmorTransport:
                  service_wait_s: float = 30.0):
         self._owns_node = node is None
         self._owns_context = False
-        if self._owns_node:
+        if node is None:
             if not rclpy.ok():
                 rclpy.init()
                 self._owns_context = True
@@ -53,14 +53,14 @@ class ArmorTransport:
             self._spinner = threading.Thread(target=self._executor.spin, daemon=True,
                                              name='armor-client-spin')
             self._spinner.start()
-        self.node = node
+        self.node: Node = node
         prefix = namespace.rstrip('/') + '/' if namespace else ''
-        self._directive = node.create_client(ArmorDirective, prefix + DIRECTIVE_SERVICE,
-                                             qos_profile=SERVICE_QOS)
-        self._list = node.create_client(ArmorDirectiveList, prefix + LIST_SERVICE,
-                                        qos_profile=SERVICE_QOS)
+        self._directive: Any = node.create_client(
+            ArmorDirective, prefix + DIRECTIVE_SERVICE, qos_profile=SERVICE_QOS)
+        self._list: Any = node.create_client(
+            ArmorDirectiveList, prefix + LIST_SERVICE, qos_profile=SERVICE_QOS)
         self._service_wait_s = service_wait_s
-        self._ready = set()
+        self._ready: Set[str] = set()
 
     def call(self, request: ArmorDirectiveReq,
              timeout_s: Optional[float] = None) -> ArmorDirectiveRes:

@@ -10,7 +10,7 @@ from typing import Optional, Sequence
 
 
 class ArmorNodeProcess:
-    """The ARMOR node (`armor serve --ros-args ...`) running in the background, its output in a log file.
+    """The ARMOR node (as `armor serve --ros-args ...`) in the background, output in a log file.
 
     Args:
         log_path: where the node's stdout and stderr go.

@@ -23,6 +23,7 @@ from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.exceptions import InvalidParameterTypeException
 from rclpy.node import Node
 
+
 class ArmorService(Node):
     """Serves armor_interface_srv and armor_interface_serialized_srv."""
 
@@ -109,7 +110,8 @@ class ArmorService(Node):
         name = self._value('preload_reference')
         listing = {'client_name': 'armor_service', 'reference_name': '', 'command': 'GET',
                    'primary_command_spec': 'ALL', 'secondary_command_spec': 'REFS', 'args': []}
-        restored = name in send({'op': 'directive', 'directive': listing})['response']['queried_objects']
+        answer = send({'op': 'directive', 'directive': listing})['response']
+        restored = name in answer['queried_objects']
         directive = {
             'client_name': 'armor_service', 'reference_name': self._value('preload_reference'),
             'command': 'LOAD', 'primary_command_spec': 'FILE', 'secondary_command_spec': '',
@@ -147,11 +149,13 @@ class ArmorService(Node):
 
     def _value(self, name):
         value = self.get_parameter(name).value
-        convert = self._armor_parameters[name].also_string if name in self._armor_parameters else None
-        return convert(value) if convert is not None else value
+        parameter = self._armor_parameters.get(name)
+        if parameter is not None and parameter.also_string is not None:
+            return parameter.also_string(value)
+        return value
 
     def _declare_parameters(self) -> None:
-        """Declare every parameter, typed; refuse names no parameter has and values of other types."""
+        """Declare every parameter, typed; refuse unknown names and values of other types."""
         for parameter in self._armor_parameters.values():
             try:
                 self.declare_parameter(parameter.name, parameter.initial(), parameter.descriptor())
@@ -160,12 +164,15 @@ class ArmorService(Node):
                                    f'{error}') from error
             if parameter.also_string is not None:
                 self._check_string_or_array(parameter)
-        unknown = sorted(set(self._parameter_overrides) - set(self._armor_parameters) - {'use_sim_time'})
+        known = set(self._armor_parameters) | {'use_sim_time'}
+        unknown = sorted(set(self._parameter_overrides) - known)
         if unknown:
-            hints = [f'{name} (did you mean {close[0]}?)' if close else name for name, close in
-                     ((n, difflib.get_close_matches(n, self._armor_parameters, 1)) for n in unknown)]
-            raise RuntimeError(f'unknown parameter(s): {", ".join(hints)}; see the parameter table '
-                               'of the README')
+            hints = []
+            for name in unknown:
+                close = difflib.get_close_matches(name, self._armor_parameters, 1)
+                hints.append(f'{name} (did you mean {close[0]}?)' if close else name)
+            raise RuntimeError(f'unknown parameter(s): {", ".join(hints)}; see the parameter '
+                               'table of the README')
 
     def _check_string_or_array(self, parameter: Parameter) -> None:
         value = self.get_parameter(parameter.name).value

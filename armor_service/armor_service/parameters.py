@@ -32,7 +32,7 @@ def path_list(value: Any) -> List[str]:
 
 
 def option_list(value: Any) -> List[str]:
-    """Command-line options as users type them: a string array, or one string split as a shell does."""
+    """Command-line options as typed: a string array, or one string split as by a shell."""
     if isinstance(value, str):
         return shlex.split(value)
     return list(value)
@@ -63,7 +63,7 @@ class Parameter:
     default_text: Optional[str] = None
 
     def descriptor(self) -> ParameterDescriptor:
-        """The ROS descriptor: type, meaning, read-only; dynamically typed where a string is also taken."""
+        """The ROS descriptor: type, meaning, read-only (dynamic where a string is taken too)."""
         descriptor = ParameterDescriptor(description=self.description, read_only=self.read_only)
         if self.also_string is not None:
             descriptor.dynamic_typing = True

@@ -17,7 +17,8 @@ def test_each_line_is_logged_at_its_level_and_a_trace_at_the_last_one(capfd):
              b'\tat io.github.armor.core.ArmorCore.run(ArmorCore.java:1)\n',
              b'INFO restored reference \'r\'\n']
     core._forward_stderr(SimpleNamespace(stderr=lines))
-    logged = [line for line in capfd.readouterr().err.splitlines() if 'core_log_levels_test' in line]
+    logged = [line for line in capfd.readouterr().err.splitlines()
+              if 'core_log_levels_test' in line]
     levels = [line.split(']')[0].lstrip('[') for line in logged]
     assert levels == ['WARN', 'INFO', 'DEBUG', 'ERROR', 'ERROR', 'INFO'], logged
     assert logged[1].endswith('core: [c] r: QUERY IND CLASS [Room] -> 0'), logged

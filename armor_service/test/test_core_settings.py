@@ -23,6 +23,6 @@ def test_a_running_core_answers_its_catalogue_over_the_socket(tmp_path):
 
 def test_a_misspelt_setting_stops_the_core_instead_of_taking_a_default(tmp_path):
     core = CoreProcess(JAR, {'lock_wait': 5}, start_timeout_s=60)
-    with pytest.raises(CoreUnavailable, match='exited with code 2'):
+    with pytest.raises(CoreUnavailable, match="unknown setting 'lock_wait'"):
         core.start()
     core.stop()

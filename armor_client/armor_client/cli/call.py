@@ -30,6 +30,7 @@ SERVICE = 'armor_interface_srv'
 # Directive arguments follow a lone '--' (they may start with '-').
 TRAILING = '--'
 
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('reference', metavar='REF', help='reference name, "-" for none')
     parser.add_argument('words', nargs='+', metavar='COMMAND [PRIMARY [SECONDARY]]',
@@ -76,7 +77,7 @@ def _use_relay(args) -> bool:
 
 
 def _relayed(fields: dict, args, waiting: '_Waiting'):
-    """The relay's answer, or None when no relay took the request (one is started for next time)."""
+    """The relay's answer, or None when no relay took it (one is then started for next time)."""
     try:
         return call_relay.call({'directive': fields, 'namespace': args.namespace,
                                 'wait_s': args.wait, 'timeout_s': args.timeout},

@@ -26,7 +26,7 @@ import sys
 import tempfile
 import threading
 import time
-from typing import Callable, Dict, Optional, Tuple
+from typing import Any, Callable, Dict, Optional, Set, Tuple
 
 _ENV_PREFIXES = ('ROS_', 'RMW_', 'FASTDDS', 'FASTRTPS', 'CYCLONEDDS', 'CONNEXT', 'ZENOH')
 _RESPONSE_FIELDS = ('success', 'timeout', 'exit_code', 'error_description', 'is_consistent')
@@ -95,8 +95,8 @@ class _Relay:
         self._path = path
         self._idle_s = idle_s
         self._last = time.monotonic()
-        self._transports: Dict[Tuple[str, float], object] = {}
-        self._proven = set()
+        self._transports: Dict[Tuple[str, float], Any] = {}
+        self._proven: Set[str] = set()
         self._lock = threading.Lock()
         self._server: Optional[socket.socket] = None
 

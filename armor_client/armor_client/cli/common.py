@@ -7,7 +7,7 @@ import sys
 from typing import Any, Callable, List, Optional, Sequence, TextIO, Tuple
 
 from armor_client.errors import ArmorServiceCallError, ArmorServiceInternalError
-from armor_client.operations import Answers
+from armor_client.operations import Answers, sparql_rows
 from armor_client.reference import Armor
 from armor_client.values import answer_value, is_literal, split_literal
 
@@ -143,22 +143,9 @@ def sparql_table(items: Sequence[Any], iris: bool) -> Tuple[List[str], List[List
     Returns:
         (variable names in order, one list of cells per row).
     """
-    headers: List[str] = []
-    rows: List[dict] = [{}]
-    for item in items:
-        if not item.key:
-            rows.append({})
-            continue
-        if item.key not in headers:
-            headers.append(item.key)
-        rows[-1][item.key] = _cell(item.value, iris)
-    return headers, [[row.get(h) for h in headers] for row in rows if row]
-
-
-def _cell(text: str, iris: bool) -> Any:
-    if not text or text.startswith('_:') or text in ('true', 'false'):
-        return text
-    return answer_value(text, iris)
+    rows = [row for row in sparql_rows(items, iris) if row]
+    headers = list(dict.fromkeys(key for row in rows for key in row))
+    return headers, [[row.get(h) for h in headers] for row in rows]
 
 
 def _text(cell: Any) -> str:

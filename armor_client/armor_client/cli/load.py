@@ -70,7 +70,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 class _ProgressBar:
-    """Draws the LOAD's progress on the terminal while it runs (GET LOAD PROGRESS, twice a second)."""
+    """Draws the LOAD's progress on the terminal while it runs (GET LOAD PROGRESS, 2 per s)."""
 
     WIDTH = 30
 
@@ -93,7 +93,7 @@ class _ProgressBar:
         started = time.monotonic()
         while not self._done.wait(0.5):
             try:
-                lines = self._armor.call('', 'GET', 'LOAD', 'PROGRESS', []).queried_objects
+                lines = self._armor.load_progress()
             except Exception:  # a progress bar never fails the load it shows
                 continue
             mine = [line.split() for line in lines if line.split()[0] == self._reference]
@@ -104,8 +104,9 @@ class _ProgressBar:
             if phase == 'reading' and int(total) > 0:
                 share = min(1.0, int(done) / int(total))
                 filled = int(share * self.WIDTH)
-                text = (f'loading {self._reference}: [{"#" * filled}{"-" * (self.WIDTH - filled)}] '
-                        f'{share:4.0%} {int(done) / 1e6:.1f}/{int(total) / 1e6:.1f} MB {elapsed:.0f} s')
+                bar = '#' * filled + '-' * (self.WIDTH - filled)
+                text = (f'loading {self._reference}: [{bar}] {share:4.0%} '
+                        f'{int(done) / 1e6:.1f}/{int(total) / 1e6:.1f} MB {elapsed:.0f} s')
             else:
                 text = f'loading {self._reference}: {phase.replace("-", " ")}... {elapsed:.0f} s'
             sys.stderr.write('\r' + text[:79].ljust(79))

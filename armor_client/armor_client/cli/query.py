@@ -26,6 +26,7 @@ from armor_client.errors import error_for
 # Directive arguments follow a lone '--' (they may start with '-').
 TRAILING = '--'
 
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Declare the options of armor query.
 

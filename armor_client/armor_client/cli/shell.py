@@ -185,15 +185,16 @@ class Shell:
         if command is None:
             print(f'unknown command: {" ".join(words[:3])} (try help)', file=self.out)
             return
-        words = command.words
-        if words == ('QUERY', 'SPARQL', ''):
+        sent = command.words
+        if sent == ('QUERY', 'SPARQL', ''):
             # Rows as variable/value pairs, so that the table's columns carry the query's names.
-            words = ('QUERY', 'SPARQL', 'FORMATTED')
-        response = self.armor.call(self.reference, *words, arguments)
+            sent = ('QUERY', 'SPARQL', 'FORMATTED')
+        response = self.armor.call(self.reference, *sent, arguments)
         if not response.success:
             raise error_for(response)
         if response.error_description:
-            # A success that says something: a name new to the reference (a typo?), a value not found.
+            # A success that says something: a name new to the reference (a typo?), a value
+            # not found.
             print(f'note: {response.error_description}', file=self.out)
         if command.kind == commands.QUERY:
             print_answer(response, command.words[1], command.words[2], self.iris, self.out)

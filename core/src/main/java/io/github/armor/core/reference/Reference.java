@@ -175,14 +175,6 @@ public final class Reference {
         return reasonerName;
     }
 
-    public boolean bufferedManipulation() {
-        return bufferedManipulation;
-    }
-
-    public boolean bufferedReasoner() {
-        return bufferedReasoner;
-    }
-
     public boolean isConsistent() {
         return consistent;
     }
