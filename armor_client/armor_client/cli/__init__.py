@@ -10,6 +10,7 @@ adds a verb by declaring one more entry point in its setup.py.
 """
 
 import argparse
+import functools
 import signal
 import sys
 from importlib.metadata import entry_points, EntryPoint
@@ -18,8 +19,9 @@ from typing import Dict
 VERB_GROUP = 'armor.verbs'
 
 
+@functools.lru_cache(maxsize=1)
 def verbs() -> Dict[str, EntryPoint]:
-    """Every installed verb, by name (nothing is imported yet)."""
+    """Every installed verb, by name (nothing is imported yet; the installed set is read once)."""
     return {point.name: point for point in entry_points(group=VERB_GROUP)}
 
 
