@@ -58,8 +58,8 @@ public record CoreConfig(
     public record Safeguards(long sparqlTimeoutMs, boolean sparqlFederated, boolean ignoreMissingImports,
                              boolean strictNames) {
         public static final Safeguards DEFAULT = new Safeguards((Long) Setting.SPARQL_TIMEOUT_MS.defaultValue(),
-                (Boolean) Setting.SPARQL_FEDERATED.defaultValue(), (Boolean) Setting.IGNORE_MISSING_IMPORTS.defaultValue(),
-                (Boolean) Setting.STRICT_NAMES.defaultValue());
+                (Boolean) Setting.SPARQL_FEDERATED.defaultValue(),
+                (Boolean) Setting.IGNORE_MISSING_IMPORTS.defaultValue(), (Boolean) Setting.STRICT_NAMES.defaultValue());
 
         public Safeguards(long sparqlTimeoutMs, boolean sparqlFederated, boolean ignoreMissingImports) {
             this(sparqlTimeoutMs, sparqlFederated, ignoreMissingImports, false);

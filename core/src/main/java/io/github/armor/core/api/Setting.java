@@ -16,8 +16,10 @@ import java.util.stream.Collectors;
  * never silently leaves the default in force.
  */
 public enum Setting {
-    DEFAULT_REASONER("default_reasoner", Type.STRING, "PELLET", "reasoner used when LOAD or CREATE names none (PELLET is Openllet: SWRL built-ins included)"),
-    FULL_ENTITY_IRI("full_entity_iri", Type.BOOLEAN, true, "answer entities as full IRIs in angle brackets (true) or as short names (false)"),
+    DEFAULT_REASONER("default_reasoner", Type.STRING, "PELLET",
+            "reasoner used when LOAD or CREATE names none (PELLET is Openllet: SWRL built-ins included)"),
+    FULL_ENTITY_IRI("full_entity_iri", Type.BOOLEAN, true,
+            "answer entities as full IRIs in angle brackets (true) or as short names (false)"),
     ALLOWED_DIRS("allowed_dirs", Type.STRING_ARRAY, List.of(),
             "LOAD FILE, SAVE and LOG FILE paths, and every document an owl:imports resolves to, must lie inside"
                     + " these"),

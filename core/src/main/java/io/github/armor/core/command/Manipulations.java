@@ -41,7 +41,8 @@ public final class Manipulations implements CommandGroup {
     }
 
     private static void registerArmorCommands(CommandTable table) {
-        table.command("ADD IND").args("ind").summary("declare an individual").manipulation(c -> c.change(adds(c, List.of(
+        table.command("ADD IND").args("ind")
+                .summary("declare an individual").manipulation(c -> c.change(adds(c, List.of(
                 c.factory().getOWLDeclarationAxiom(c.individual(0)),
                 c.factory().getOWLClassAssertionAxiom(c.factory().getOWLThing(), c.individual(0))))));
         table.command("ADD CLASS").args("class").summary("declare a class").manipulation(c -> c.change(adds(c, List.of(
@@ -72,10 +73,15 @@ public final class Manipulations implements CommandGroup {
                     : adds(c, List.of(c.factory().getOWLDisjointClassesAxiom(children))));
         });
         table.command("MAKE EQUIVALENT CLASS").args("class")
-                .summary("turn its SubClassOf axioms into one EquivalentClasses").manipulation(c -> c.change(makeEquivalentChanges(c)));
-        table.command("REMOVE IND").args("ind").summary("remove every axiom that mentions the individual").manipulation(c -> c.change(removeEntity(c.reference(),
+                        .summary("turn its SubClassOf axioms into one EquivalentClasses")
+                        .manipulation(c -> c.change(makeEquivalentChanges(c)));
+        table.command("REMOVE IND").args("ind")
+                .summary("remove every axiom that mentions the individual")
+                .manipulation(c -> c.change(removeEntity(c.reference(),
                 c.individual(0))));
-        table.command("REMOVE CLASS").args("class").summary("remove every axiom that mentions the class").manipulation(c -> c.change(removeEntity(c.reference(),
+        table.command("REMOVE CLASS").args("class")
+                .summary("remove every axiom that mentions the class")
+                .manipulation(c -> c.change(removeEntity(c.reference(),
                 c.owlClass(0))));
         table.command("REPLACE DATAPROP IND").args("prop", "ind", "type", "new value", "old value")
                 .summary("replace one data property value by another")

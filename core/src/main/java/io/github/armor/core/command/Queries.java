@@ -37,9 +37,11 @@ public final class Queries implements CommandGroup {
     }
 
     private static void registerIndividualQueries(CommandTable table) {
-        table.command("QUERY IND").args("ind").summary("the classes of the individual").query(c -> c.ok(c.render().entities(types(c.reference(),
+        table.command("QUERY IND").args("ind")
+                .summary("the classes of the individual").query(c -> c.ok(c.render().entities(types(c.reference(),
                 c.individual(0), false).stream())));
-        table.command("QUERY IND CLASS").args("class").summary("the instances of the class").query(c -> c.ok(c.render().entities(
+        table.command("QUERY IND CLASS").args("class")
+                .summary("the instances of the class").query(c -> c.ok(c.render().entities(
                 Inferences.instances(c.reference(), c.owlClass(0), false).stream())));
         table.command("QUERY IND DL").args("class expression")
                 .summary("the instances of a Manchester class expression").query(c -> c.ok(c.render().entities(
@@ -59,7 +61,8 @@ public final class Queries implements CommandGroup {
             same.remove(individual);
             return c.ok(c.render().entities(same.stream()));
         });
-        table.command("QUERY IND DATAPROP").args("ind").summary("the data properties that have values for it").query(c -> {
+        table.command("QUERY IND DATAPROP").args("ind")
+                .summary("the data properties that have values for it").query(c -> {
             Reference reference = c.reference();
             OWLNamedIndividual individual = c.individual(0);
             Stream<OWLDataProperty> inferred = reference.ontology().dataPropertiesInSignature(Imports.INCLUDED)
@@ -77,7 +80,8 @@ public final class Queries implements CommandGroup {
     }
 
     private static void registerClassQueries(CommandTable table) {
-        table.command("QUERY CLASS CLASS").args("class").summary("subclasses, all levels").query(c -> c.ok(c.render().entities(
+        table.command("QUERY CLASS CLASS").args("class")
+                .summary("subclasses, all levels").query(c -> c.ok(c.render().entities(
                 Inferences.subClasses(c.reference(), c.owlClass(0), false).stream())));
         table.command("QUERY CLASS DL").args("class expression")
                 .summary("the subclasses of a Manchester class expression").query(c -> c.ok(c.render().entities(
@@ -89,7 +93,8 @@ public final class Queries implements CommandGroup {
                 (r, owlClass) -> r.getEquivalentClasses(owlClass).entities());
         classRelation(table, "QUERY CLASS DISJOINT", "disjoint classes", EntitySearcher::getDisjointClasses,
                 (r, owlClass) -> r.getDisjointClasses(owlClass).entities());
-        table.command("QUERY CLASS RESTRICTIONS").args("class").summary("its restrictions, Manchester syntax").query(c -> {
+        table.command("QUERY CLASS RESTRICTIONS").args("class")
+                .summary("its restrictions, Manchester syntax").query(c -> {
             OWLClass owlClass = c.owlClass(0);
             Stream<OWLClassExpression> definitions = Stream.concat(
                     EntitySearcher.getSuperClasses(owlClass, Inferences.closure(c.reference())),
@@ -121,7 +126,8 @@ public final class Queries implements CommandGroup {
         table.command("QUERY OBJECTPROP IND").args("prop", "ind")
                 .summary("the individuals it is related to by the property").query(c -> c.ok(c.render().entities(
                 objectValues(c.reference(), c.objectProperty(0), c.individual(1)).stream())));
-        table.command("QUERY DATAPROP IND").args("prop", "ind").summary("its values of the property").query(c -> c.ok(Rendering.literals(
+        table.command("QUERY DATAPROP IND").args("prop", "ind")
+                .summary("its values of the property").query(c -> c.ok(Rendering.literals(
                 dataValues(c.reference(), c.dataProperty(0), c.individual(1)))));
         table.command("QUERY OBJECTPROP OBJECTPROP").args("prop")
                 .summary("sub-properties of an object property").query(c -> {

@@ -34,7 +34,8 @@ public final class ReferenceCommands implements CommandGroup {
                 .summary("create the reference as an empty ontology")
                 .creating(c -> load(c, -1, false, null,
                         ignored -> new OntologyFiles.Loaded(files(c).create(c.arg(0)), "")));
-        table.command("SAVE").optional("path", "format").summary("write the ontology to a file").onReference(c -> save(c, false));
+        table.command("SAVE").optional("path", "format")
+                .summary("write the ontology to a file").onReference(c -> save(c, false));
         table.command("SAVE INFERENCE").optional("path", "format")
                 .summary("write the ontology and its inferences to a file").onReference(c -> save(c, true));
         table.command("DROP").summary("unload the reference").dropping(c -> {
@@ -44,7 +45,8 @@ public final class ReferenceCommands implements CommandGroup {
         table.command("MOUNT").summary("become the only client allowed to change it")
                 .mounting(ReferenceCommands::mount);
         table.command("UNMOUNT").summary("release the mount").mounting(ReferenceCommands::unmount);
-        table.command("GET ALL REFS").summary("names of the loaded references").global(c -> Response.ok(true, c.references().names()));
+        table.command("GET ALL REFS")
+                .summary("names of the loaded references").global(c -> Response.ok(true, c.references().names()));
         // One line per LOAD in flight: reference, phase, bytes read, bytes in all, elapsed ms.
         table.command("GET LOAD PROGRESS").summary("the LOADs in flight, one line each")
                 .global(c -> Response.ok(true, LoadProgress.running()));

@@ -59,7 +59,8 @@ class CatalogueTest {
         assertEquals("dropping", drop.get("kind").getAsString());
         assertEquals("", drop.getAsJsonArray("words").get(1).getAsString());
         JsonObject query = find(json, "commands", "key", "QUERY CLASS IND");
-        assertEquals("most specific only", query.getAsJsonObject("args").getAsJsonArray("optional").get(0).getAsString());
+        assertEquals("most specific only",
+                query.getAsJsonObject("args").getAsJsonArray("optional").get(0).getAsString());
         assertFalse(query.get("changes_ontology").getAsBoolean());
         assertEquals(ExitCode.values().length, json.getAsJsonArray("exit_codes").size());
         JsonObject lockWait = find(json, "settings", "key", "lock_wait_ms");
@@ -99,7 +100,8 @@ class CatalogueTest {
                         public final class HelloCommands implements CommandGroup {
                             public void register(CommandTable table) {
                                 table.command("QUERY HELLO").args("name").summary("greets")
-                                        .global(c -> io.github.armor.core.api.Response.ok(true, List.of("hello " + c.arg(0))));
+                                        .global(c -> io.github.armor.core.api.Response.ok(true,
+                                                List.of("hello " + c.arg(0))));
                             }
                         }
                         """,
@@ -119,7 +121,8 @@ class CatalogueTest {
                 .execute(Directive.of("c", "", "QUERY", "HELLO", "", "world"));
         assertEquals(List.of("hello world"), hello.queriedObjects());
 
-        assertThrows(RuntimeException.class, () -> ReasonerRegistry.canonicalName("example.TinyReasonerFactory", "HERMIT"));
+        assertThrows(RuntimeException.class,
+                () -> ReasonerRegistry.canonicalName("example.TinyReasonerFactory", "HERMIT"));
         ReasonerRegistry.useClassLoader(loader);
         try {
             assertEquals("example.TinyReasonerFactory", ReasonerRegistry.canonicalName("example.TinyReasonerFactory",

@@ -4,7 +4,6 @@ package io.github.armor.core.server;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.io.OutputStream;
 import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -29,7 +28,8 @@ final class PluginJars {
                       Class<?>... classpathOf) throws IOException {
         Path src = Files.createDirectories(work.resolve("src"));
         Path classes = Files.createDirectories(work.resolve("classes"));
-        List<String> arguments = new ArrayList<>(List.of("-d", classes.toString(), "-classpath", classpath(classpathOf)));
+        List<String> arguments = new ArrayList<>(List.of("-d", classes.toString(), "-classpath",
+                classpath(classpathOf)));
         for (Map.Entry<String, String> source : sources.entrySet()) {
             Path file = src.resolve(source.getKey().replace('.', '/') + ".java");
             Files.createDirectories(file.getParent());
@@ -53,8 +53,7 @@ final class PluginJars {
 
     private static void add(JarOutputStream out, String name, byte[] content) throws IOException {
         out.putNextEntry(new JarEntry(name));
-        OutputStream entry = out;
-        entry.write(content);
+        out.write(content);
         out.closeEntry();
     }
 
