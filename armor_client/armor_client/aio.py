@@ -24,8 +24,7 @@ from typing import Any, AsyncIterator, Optional, Sequence
 
 from armor_client.batch import BatchBase
 from armor_client.errors import ArmorMountError, error_for
-from armor_client.operations import (Answers, Manipulations, Parser, Queries, ReferenceCommands,
-                                     SessionCommands, Words)
+from armor_client.operations import Parser, ReferenceBase, SessionCommands, Words
 from armor_client.reference import default_client_name
 from armor_client.transport import ArmorTransport, directive
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
@@ -134,7 +133,7 @@ class AsyncArmor(SessionCommands):
         return parse(response)
 
 
-class AsyncReference(Manipulations, Queries, ReferenceCommands):
+class AsyncReference(ReferenceBase):
     """The asyncio twin of Reference: every method returns an awaitable of Reference's result.
 
     ``await ref.instances('Room')`` answers what ``Reference.instances('Room')`` answers;
@@ -147,22 +146,7 @@ class AsyncReference(Manipulations, Queries, ReferenceCommands):
         iris: answer entities as full IRIs instead of short names.
     """
 
-    def __init__(self, armor: AsyncArmor, name: str, iris: bool = False):
-        self.armor = armor
-        self.name = name
-        self.answers = Answers(iris)
-        self.consistent: Optional[bool] = None
-
-    def __repr__(self) -> str:
-        return f'AsyncReference({self.name!r}, client={self.armor.client_name!r})'
-
-    def mounted_by(self) -> Any:
-        """The client that holds this reference's mount (GET REF CLIENT).
-
-        Returns:
-            An awaitable of the client name or None.
-        """
-        return self.armor.mounted_by(self.name)
+    armor: AsyncArmor
 
     @contextlib.asynccontextmanager
     async def mounted(self) -> AsyncIterator['AsyncReference']:
@@ -194,11 +178,7 @@ class AsyncReference(Manipulations, Queries, ReferenceCommands):
         return AsyncBatch(self.armor, self.name)
 
     async def _execute(self, words: Words, args: Sequence[Any], parse: Any) -> Any:
-        response = await self.armor.call(self.name, *words, args)
-        if not response.success:
-            raise error_for(response)
-        self.consistent = response.is_consistent
-        return parse(response)
+        return self._answer(await self.armor.call(self.name, *words, args), parse)
 
 
 class AsyncBatch(BatchBase):

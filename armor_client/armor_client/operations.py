@@ -15,6 +15,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
+from armor_client.errors import error_for
 from armor_client.values import answer_value, entity_iri, short_name, typed_argument, Value
 
 Words = Tuple[str, str, str]
@@ -1133,3 +1134,37 @@ class SessionCommands:
         if path is None:
             return self._session('', ('LOG', 'FILE', 'OFF'), [], Answers.nothing)
         return self._session('', ('LOG', 'FILE', 'ON'), [path], Answers.nothing)
+
+
+class ReferenceBase(Manipulations, Queries, ReferenceCommands):
+    """What Reference and AsyncReference share: the state, and reading an answer.
+
+    Args:
+        armor: the session that sends the directives (Armor or AsyncArmor).
+        name: the reference name.
+        iris: answer entities as full IRIs instead of short names.
+    """
+
+    def __init__(self, armor: Any, name: str, iris: bool = False):
+        self.armor = armor
+        self.name = name
+        self.answers = Answers(iris)
+        self.consistent: Optional[bool] = None
+
+    def __repr__(self) -> str:
+        return f'{type(self).__name__}({self.name!r}, client={self.armor.client_name!r})'
+
+    def mounted_by(self) -> Any:
+        """The client that holds this reference's mount (GET REF CLIENT).
+
+        Returns:
+            Its name, or None (an awaitable of it from AsyncReference).
+        """
+        return self.armor.mounted_by(self.name)
+
+    def _answer(self, response: Any, parse: Parser) -> Any:
+        """The parsed answer of a response to this reference; raises when it failed."""
+        if not response.success:
+            raise error_for(response)
+        self.consistent = response.is_consistent
+        return parse(response)

@@ -15,8 +15,7 @@ from typing import Any, Iterator, Optional, Sequence
 
 from armor_client.batch import Batch
 from armor_client.errors import ArmorMountError, error_for
-from armor_client.operations import (Answers, Manipulations, Parser, Queries, ReferenceCommands,
-                                     SessionCommands, Words)
+from armor_client.operations import Parser, ReferenceBase, SessionCommands, Words
 from armor_client.transport import ArmorTransport, directive
 from armor_msgs.msg import ArmorDirectiveRes
 from rclpy.node import Node
@@ -108,7 +107,7 @@ class Armor(SessionCommands):
         return parse(response)
 
 
-class Reference(Manipulations, Queries, ReferenceCommands):
+class Reference(ReferenceBase):
     """One loaded ontology: every command of the contract as a method.
 
     Get one from Armor.reference(), Armor.load_file(), Armor.load_web() or Armor.create().
@@ -121,22 +120,7 @@ class Reference(Manipulations, Queries, ReferenceCommands):
         iris: answer entities as full IRIs instead of short names.
     """
 
-    def __init__(self, armor: Armor, name: str, iris: bool = False):
-        self.armor = armor
-        self.name = name
-        self.answers = Answers(iris)
-        self.consistent: Optional[bool] = None
-
-    def __repr__(self) -> str:
-        return f'Reference({self.name!r}, client={self.armor.client_name!r})'
-
-    def mounted_by(self) -> Optional[str]:
-        """The client that holds this reference's mount (GET REF CLIENT).
-
-        Returns:
-            Its name, or None.
-        """
-        return self.armor.mounted_by(self.name)
+    armor: Armor
 
     @contextlib.contextmanager
     def mounted(self) -> Iterator['Reference']:
@@ -171,8 +155,4 @@ class Reference(Manipulations, Queries, ReferenceCommands):
                      self.armor.timeout_s)
 
     def _execute(self, words: Words, args: Sequence[Any], parse: Any) -> Any:
-        response = self.armor.call(self.name, *words, args)
-        if not response.success:
-            raise error_for(response)
-        self.consistent = response.is_consistent
-        return parse(response)
+        return self._answer(self.armor.call(self.name, *words, args), parse)
