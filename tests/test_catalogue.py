@@ -52,3 +52,19 @@ def test_the_docs_table_shorthand_is_read_as_written():
     assert tool._alternatives('ADD CARDINALITY MIN (or ADD MIN CARDINALITY)') == [
         'ADD MIN CARDINALITY', 'ADD CARDINALITY MIN']
     assert tool._alternatives('MOUNT / UNMOUNT') == ['MOUNT', 'UNMOUNT']
+
+
+def test_make_catalogue_gives_a_new_command_its_first_docs_row(core_text):
+    core = json.loads(core_text)
+    core['commands'].append({'key': 'QUERY IND COUNT', 'words': ['QUERY', 'IND', 'COUNT'],
+                             'aliases': [], 'kind': 'query', 'changes_ontology': False,
+                             'args': {'required': ['class'], 'optional': [], 'variadic': False},
+                             'summary': 'how many instances'})
+    doc = tool.COMMANDS_DOC.read_text()
+    written = tool.docs_with_new_commands(doc, core)
+    assert tool.documented_commands(written) - tool.documented_commands(doc) == {
+        'QUERY IND COUNT'}
+    queries = tool._section(written, '## Queries')
+    assert ('| QUERY IND COUNT | class | how many instances | '
+            '`armor call robotics QUERY IND COUNT -- class` |') in queries
+    assert tool.docs_with_new_commands(doc, json.loads(core_text)) == doc

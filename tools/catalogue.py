@@ -7,8 +7,10 @@
 
 The core (``java -jar armor-core.jar --catalogue``) owns the commands, exit codes and settings.
 Generated from it: armor_contract/armor_contract/catalogue.json (the Python catalogue, CLI
-parsing and completion, and the node's parameters read it) and README's parameter table (with
-the node's own parameters of armor_service/parameters.py). Checked against it: the command and
+parsing and completion, and the node's parameters read it), README's parameter table (with
+the node's own parameters of armor_service/parameters.py), and a first row in
+docs/commands.md for a command it lacks (summary and an example built from the argument
+names, to be edited). Checked against it: the command and
 exit-code tables of docs/commands.md (they carry hand-written examples), and the sample
 parameters file armor_service/config/armor.params.yaml (every parameter shown, no other).
 tests/test_catalogue.py runs the check.
@@ -37,7 +39,8 @@ COMMAND_SECTIONS = ('## References and utilities', '## Manipulations', '## Queri
 
 def core_jar() -> pathlib.Path:
     """The installed core jar (install/setup.bash exports ARMOR_CORE_JAR)."""
-    jar = os.environ.get('ARMOR_CORE_JAR') or str(REPO / 'install' / 'armor_core' / 'armor-core.jar')
+    jar = (os.environ.get('ARMOR_CORE_JAR')
+           or str(REPO / 'install' / 'armor_core' / 'armor-core.jar'))
     return pathlib.Path(jar)
 
 
@@ -131,7 +134,8 @@ def differences(core_text: str) -> List[str]:
     shipped = CATALOGUE_JSON.read_text() if CATALOGUE_JSON.exists() else ''
     if shipped.strip() != core_text.strip():
         diff = difflib.unified_diff(shipped.splitlines(), core_text.splitlines(),
-                                    str(CATALOGUE_JSON.relative_to(REPO)), 'the core', lineterm='', n=1)
+                                    str(CATALOGUE_JSON.relative_to(REPO)), 'the core',
+                                    lineterm='', n=1)
         found.append('catalogue.json differs from the core (run make catalogue):\n' + '\n'.join(
             itertools.islice(diff, 60)))
     names: Dict[str, str] = {}
@@ -160,19 +164,61 @@ def differences(core_text: str) -> List[str]:
     for name in sorted(sample - parameter_names):
         found.append(f'{SAMPLE_PARAMETERS.relative_to(REPO)} sets {name}, which is no parameter')
     if README.read_text() != readme_with_table(README.read_text()):
-        found.append('README.md: the parameter table differs from the parameters (run make catalogue)')
+        found.append('README.md: the parameter table differs from the parameters '
+                     '(run make catalogue)')
     return found
+
+
+def _section_of(kind: str) -> str:
+    return {'query': '## Queries', 'manipulation': '## Manipulations'}.get(
+        kind, '## References and utilities')
+
+
+def doc_row(command: dict, columns: int) -> str:
+    """A first row for a command docs/commands.md lacks: arguments, summary, an example call."""
+    name = ' '.join(w for w in command['words'] if w)
+    args = command['args']
+    shown = [*args['required'], *(f'[{a}]' for a in args['optional'])]
+    shown += ['...'] if args['variadic'] else []
+    example = ' '.join(['armor call robotics', name]
+                       + (['--'] + [a.replace(' ', '_') for a in args['required']]
+                          if args['required'] else []))
+    example = f'`{example}`'
+    cells = [name, ', '.join(shown) or '-', command['summary'], example]
+    return '| ' + ' | '.join(cells if columns == 4 else [cells[0], cells[1], example]) + ' |'
+
+
+def docs_with_new_commands(doc: str, core: dict) -> str:
+    """docs/commands.md with a generated row for each command it does not name yet."""
+    documented = documented_commands(doc)
+    for command in core['commands']:
+        name = ' '.join(w for w in command['words'] if w)
+        if name in documented:
+            continue
+        heading = _section_of(command['kind'])
+        start = doc.index(heading + '\n')
+        end = doc.find('\n## ', start + len(heading))
+        section = doc[start:end if end >= 0 else len(doc)]
+        rows = [line for line in section.splitlines() if line.startswith('|')]
+        last = section.rindex(rows[-1]) + len(rows[-1])
+        row = doc_row(command, rows[0].count('|') - 1)
+        doc = doc[:start + last] + '\n' + row + doc[start + last:]
+    return doc
 
 
 def main(argv: List[str]) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument('--check', action='store_true', help='write nothing; exit 1 on a difference')
+    parser.add_argument('--check', action='store_true',
+                        help='write nothing; exit 1 on a difference')
     options = parser.parse_args(argv)
     core_text = core_catalogue_text(core_jar())
     if not options.check:
         CATALOGUE_JSON.write_text(core_text)
         README.write_text(readme_with_table(README.read_text()))
-        print(f'wrote {CATALOGUE_JSON.relative_to(REPO)} and the parameter table of README.md')
+        COMMANDS_DOC.write_text(docs_with_new_commands(COMMANDS_DOC.read_text(),
+                                                       json.loads(core_text)))
+        print(f'wrote {CATALOGUE_JSON.relative_to(REPO)}, the parameter table of README.md and'
+              ' a row in docs/commands.md for each command it lacked (edit its example)')
     found = differences(core_text)
     for finding in found:
         print(finding, file=sys.stderr)
