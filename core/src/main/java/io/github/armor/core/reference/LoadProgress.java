@@ -26,6 +26,9 @@ import org.slf4j.LoggerFactory;
 public final class LoadProgress implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(LoadProgress.class);
     private static final long REPORT_EVERY_S = 5;
+    // A LOAD this slow, or of a file this large, says what it read and how long it took.
+    private static final long NOTEWORTHY_MS = 2_000;
+    private static final long NOTEWORTHY_BYTES = 10_000_000;
     private static final Map<String, LoadProgress> RUNNING = new ConcurrentHashMap<>();
     private static final ThreadLocal<LoadProgress> CURRENT = new ThreadLocal<>();
     private static final ScheduledExecutorService REPORTER = Executors.newSingleThreadScheduledExecutor(r -> {
@@ -100,7 +103,7 @@ public final class LoadProgress implements AutoCloseable {
     /** The document is parsed: says what it held when that took a while, and what comes next. */
     public void parsed(long axioms, long individuals, String reasoner) {
         phase = "starting-reasoner";
-        if (elapsedMs() >= 2_000) {
+        if (noteworthy()) {
             LOG.info("loading '{}': read {} in {} s: {} axioms, {} individuals; starting {}", reference, source,
                     elapsedMs() / 1000, axioms, individuals, reasoner);
         }
@@ -111,9 +114,18 @@ public final class LoadProgress implements AutoCloseable {
         report.cancel(false);
         RUNNING.remove(reference, this);
         CURRENT.remove();
-        if (elapsedMs() >= 2_000) {
+        if (noteworthy()) {
             LOG.info("loading '{}' took {} s", reference, elapsedMs() / 1000);
         }
+    }
+
+    /**
+     * Slow, or large: how fast a given file parses depends on the machine and its load, so a
+     * large file is reported whatever the time it took (a test of a 14 MB file saw the
+     * counts line appear on a busy machine and not on a quiet one).
+     */
+    private boolean noteworthy() {
+        return elapsedMs() >= NOTEWORTHY_MS || totalBytes >= NOTEWORTHY_BYTES;
     }
 
     private long elapsedMs() {
