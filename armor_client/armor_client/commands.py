@@ -4,10 +4,11 @@
 The core owns the list (``java -jar armor-core.jar --catalogue``; generated into
 armor_contract's catalogue.json by ``make catalogue`` and checked against the core by a test),
 so a command added in Java is parsed and completed here without a line of Python. The
-command-line tools parse and complete directives with it.
+command-line tools parse and complete directives with it, after learning from the running
+node (``learn``) the commands its plugins add.
 """
 
-from typing import Dict, List, Optional, Sequence, Tuple
+from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 
 from armor_contract.catalogue import (  # noqa: F401  (the kinds are part of this module's API)
     Command, CREATING, DROPPING, GLOBAL, load, MANIPULATION, MOUNTING, QUERY, REFERENCE)
@@ -16,6 +17,24 @@ COMMANDS: Tuple[Command, ...] = load().commands
 
 _BY_WORDS: Dict[Tuple[str, str, str], Command] = {
     words: command for command in COMMANDS for words in (command.words, *command.aliases)}
+
+
+def learn(answered: Iterable[Command]) -> List[Command]:
+    """Add what a running node answers beyond the shipped catalogue (plugins' commands).
+
+    Args:
+        answered: the commands of the node's own catalogue (GET CATALOGUE).
+
+    Returns:
+        The commands that were new here.
+    """
+    global COMMANDS
+    added = [command for command in answered if command.words not in _BY_WORDS]
+    for command in added:
+        for words in (command.words, *command.aliases):
+            _BY_WORDS.setdefault(words, command)
+    COMMANDS = COMMANDS + tuple(added)
+    return added
 
 
 def find(command: str, primary: str = '', secondary: str = '') -> Optional[Command]:

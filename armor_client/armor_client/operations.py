@@ -11,11 +11,13 @@ Armor and AsyncArmor. Every method therefore ends in ``return self._execute(...)
 """
 
 import enum
+import json
 import re
 from dataclasses import dataclass, field
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 from armor_client.errors import error_for
+from armor_contract import catalogue
 from armor_client.values import answer_value, entity_iri, short_name, typed_argument, Value
 
 Words = Tuple[str, str, str]
@@ -993,6 +995,12 @@ def load_args(source: str, iri: str, buffered_manipulation: bool, reasoner: Unio
     return [source, *reasoning_args(iri, buffered_manipulation, reasoner, buffered_reasoner)]
 
 
+def _catalogue(response: Any) -> catalogue.Catalogue:
+    texts = list(response.queried_objects)
+    return catalogue.parse(json.loads(texts[0]) if texts else
+                           {'commands': [], 'exit_codes': [], 'settings': []})
+
+
 class SessionCommands:
     """Loading references and the utilities that need none: the directives of a session.
 
@@ -1100,6 +1108,14 @@ class SessionCommands:
         """
         return self._session('', ('GET', 'LOAD', 'PROGRESS'), [],
                              lambda response: list(response.queried_objects))
+
+    def catalogue(self) -> Any:
+        """What the running node answers, GET CATALOGUE: commands, exit codes, settings.
+
+        Returns:
+            An armor_contract.catalogue.Catalogue (empty if the node sent no JSON).
+        """
+        return self._session('', ('GET', 'CATALOGUE', ''), [], _catalogue)
 
     def mounted_by(self, reference: str) -> Optional[str]:
         """The client that holds a reference's mount (GET REF CLIENT).

@@ -9,9 +9,10 @@ in META-INF/services, drop the jar in the directory.
 import os
 import pathlib
 import subprocess
+import sys
 import zipfile
 
-from armor_client import ArmorTransport, directive
+from armor_client import Armor, ArmorTransport, commands, directive
 from conftest import ONTOLOGIES, start_node
 
 HELLO = '''package example;
@@ -72,6 +73,17 @@ def test_a_plugin_jar_adds_a_command_and_a_reasoner(tmp_path):
         assert rooms.success and list(rooms.queried_objects) == list(expected.queried_objects)
         assert len(rooms.queried_objects) >= 1
         transport.close()
+        # Clients learn the plugin's command from the running node: the typed client, and
+        # armor query, which parses with the catalogue.
+        with Armor('t', namespace='/plugged') as armor:
+            answered = armor.catalogue()
+        assert 'QUERY HELLO' in {command.name for command in answered.commands}
+        assert 'QUERY HELLO' not in {command.name for command in commands.COMMANDS}
+        shown = subprocess.run(
+            [sys.executable, '-m', 'armor_client.cli', 'query', '--namespace', '/plugged',
+             'robotics', 'HELLO', 'world'], capture_output=True, text=True, timeout=120)
+        assert shown.returncode == 0, shown.stderr
+        assert 'hello world' in shown.stdout
     finally:
         node.stop()
 

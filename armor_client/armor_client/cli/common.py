@@ -6,6 +6,7 @@ import functools
 import sys
 from typing import Any, Callable, List, Optional, Sequence, TextIO, Tuple
 
+from armor_client import commands
 from armor_client.errors import ArmorServiceCallError, ArmorServiceInternalError
 from armor_client.operations import Answers, sparql_rows
 from armor_client.reference import Armor
@@ -49,6 +50,14 @@ def connect(args: argparse.Namespace, iris: bool = False) -> Armor:
     """
     return Armor(args.client, namespace=args.namespace, timeout_s=args.timeout,
                  service_wait_s=args.wait, iris=iris)
+
+
+def learn_commands(armor: Armor) -> None:
+    """Teach the command table what the node's plugins add (nothing, from an older node)."""
+    try:
+        commands.learn(armor.catalogue().commands)
+    except ArmorServiceInternalError:
+        pass
 
 
 def reporting_errors(verb: str) -> Callable[[Callable[..., int]], Callable[..., int]]:

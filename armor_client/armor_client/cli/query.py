@@ -18,8 +18,8 @@ import sys
 
 from armor_client import commands
 from armor_client.cli.call import print_response
-from armor_client.cli.common import (add_connection_arguments, connect, print_answer,
-                                     reporting_errors)
+from armor_client.cli.common import (add_connection_arguments, connect, learn_commands,
+                                     print_answer, reporting_errors)
 from armor_client.errors import error_for
 
 
@@ -56,15 +56,16 @@ def run(args: argparse.Namespace) -> int:
         words.insert(0, 'QUERY')
     if args.directive_args:
         words += ['--', *args.directive_args]
-    command, arguments = commands.split_directive(words)
-    if command is None or command.words[0] != 'QUERY':
-        raise RuntimeError(f'no QUERY command starts with "{" ".join(words)}"; '
-                           'see docs/commands.md#queries')
-    _, primary, secondary = command.words
-    if (primary, secondary) == ('SPARQL', ''):
-        # A table needs the variable names, which only the formatted answer carries.
-        secondary = 'FORMATTED'
     with connect(args) as armor:
+        learn_commands(armor)
+        command, arguments = commands.split_directive(words)
+        if command is None or command.words[0] != 'QUERY':
+            raise RuntimeError(f'no QUERY command starts with "{" ".join(words)}"; '
+                               'see docs/commands.md#queries')
+        _, primary, secondary = command.words
+        if (primary, secondary) == ('SPARQL', ''):
+            # A table needs the variable names, which only the formatted answer carries.
+            secondary = 'FORMATTED'
         response = armor.call(args.reference, 'QUERY', primary, secondary, arguments)
     if args.json:
         print_response(response, as_json=True)

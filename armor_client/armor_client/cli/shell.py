@@ -21,8 +21,8 @@ import sys
 from typing import Callable, Iterable, List, Optional, TextIO
 
 from armor_client import commands
-from armor_client.cli.common import (add_connection_arguments, connect, print_answer,
-                                     print_table)
+from armor_client.cli.common import (add_connection_arguments, connect, learn_commands,
+                                     print_answer, print_table)
 from armor_client.errors import ArmorError, error_for
 from armor_client.operations import Characteristic, Reasoner
 from armor_client.reference import Armor
@@ -231,6 +231,7 @@ def run(args: argparse.Namespace) -> int:
     """
     interactive = sys.stdin.isatty()
     with connect(args) as armor:
+        learn_commands(armor)
         shell = Shell(armor, args.reference, args.iri, sys.stdout)
         if interactive:
             _interactive(shell)

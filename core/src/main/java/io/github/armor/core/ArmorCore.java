@@ -328,7 +328,8 @@ public final class ArmorCore implements AutoCloseable {
     }
 
     private CommandContext context(Directive directive, Reference reference) {
-        return new CommandContext(directive, reference, references, config, rendering, directiveLog, replaying.get());
+        return new CommandContext(directive, reference, references, config, rendering, directiveLog, replaying.get(),
+                commands);
     }
 
     private void checkMount(Reference reference, Directive directive) {

@@ -30,11 +30,13 @@ public final class CommandContext {
     private final Rendering rendering;
     private final DirectiveLog log;
     private final boolean replaying;
+    private final CommandTable commands;
     private Supplier<Response> afterRelease;
     private final List<String> unknownNames = new ArrayList<>();
 
     public CommandContext(Directive directive, Reference reference, ReferenceRegistry references,
-                          CoreConfig config, Rendering rendering, DirectiveLog log, boolean replaying) {
+                          CoreConfig config, Rendering rendering, DirectiveLog log, boolean replaying,
+                          CommandTable commands) {
         this.directive = directive;
         this.reference = reference;
         this.references = references;
@@ -42,6 +44,12 @@ public final class CommandContext {
         this.rendering = rendering;
         this.log = log;
         this.replaying = replaying;
+        this.commands = commands;
+    }
+
+    /** Every command the core answers (GET CATALOGUE lists them). */
+    public CommandTable commands() {
+        return commands;
     }
 
     /** Whether the directive is a journal record replayed at start, not a client's request. */

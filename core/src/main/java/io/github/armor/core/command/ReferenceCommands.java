@@ -50,6 +50,8 @@ public final class ReferenceCommands implements CommandGroup {
         // One line per LOAD in flight: reference, phase, bytes read, bytes in all, elapsed ms.
         table.command("GET LOAD PROGRESS").summary("the LOADs in flight, one line each")
                 .global(c -> Response.ok(true, LoadProgress.running()));
+        table.command("GET CATALOGUE").summary("the catalogue: commands (plugins' too), exit codes, settings; JSON")
+                .global(c -> Response.ok(true, List.of(Catalogue.json(c.commands()).toString())));
         table.command("GET REF CLIENT").optional("reference name")
                 .summary("the client that holds the mount, if any").global(c -> {
             String name = c.hasArg(0) ? c.arg(0) : c.directive().referenceName();

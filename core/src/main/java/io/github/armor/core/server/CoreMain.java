@@ -4,6 +4,7 @@ package io.github.armor.core.server;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import io.github.armor.core.ArmorCore;
+import io.github.armor.core.command.Catalogue;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Setting;
 import io.github.armor.core.command.CommandTable;

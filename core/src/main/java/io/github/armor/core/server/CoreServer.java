@@ -4,6 +4,7 @@ package io.github.armor.core.server;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import io.github.armor.core.ArmorCore;
+import io.github.armor.core.command.Catalogue;
 import java.io.EOFException;
 import java.io.IOException;
 import java.net.StandardProtocolFamily;

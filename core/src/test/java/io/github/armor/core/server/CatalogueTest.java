@@ -15,6 +15,7 @@ import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.api.Setting;
+import io.github.armor.core.command.Catalogue;
 import io.github.armor.core.command.CommandGroup;
 import io.github.armor.core.command.CommandKind;
 import io.github.armor.core.command.CommandSpec;
@@ -117,9 +118,14 @@ class CatalogueTest {
         assertEquals(CommandTable.standard().catalogue().size() + 1, table.catalogue().size());
         assertEquals("greets", find(Catalogue.json(table), "commands", "key", "QUERY HELLO -").get("summary")
                 .getAsString());
-        Response hello = new ArmorCore(CoreConfig.defaults(scratch), table)
-                .execute(Directive.of("c", "", "QUERY", "HELLO", "", "world"));
+        ArmorCore core = new ArmorCore(CoreConfig.defaults(scratch), table);
+        Response hello = core.execute(Directive.of("c", "", "QUERY", "HELLO", "", "world"));
         assertEquals(List.of("hello world"), hello.queriedObjects());
+        // Clients learn of the plugin's command from the running core.
+        Response catalogue = core.execute(Directive.of("c", "", "GET", "CATALOGUE", ""));
+        assertEquals(Catalogue.json(table), JsonParser.parseString(catalogue.queriedObjects().get(0)));
+        assertEquals("greets", find(JsonParser.parseString(catalogue.queriedObjects().get(0)).getAsJsonObject(),
+                "commands", "key", "QUERY HELLO -").get("summary").getAsString());
 
         assertThrows(RuntimeException.class,
                 () -> ReasonerRegistry.canonicalName("example.TinyReasonerFactory", "HERMIT"));

@@ -1,5 +1,5 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-package io.github.armor.core.server;
+package io.github.armor.core.command;
 
 import com.google.gson.GsonBuilder;
 import com.google.gson.JsonArray;
@@ -8,16 +8,15 @@ import com.google.gson.JsonObject;
 import com.google.gson.JsonPrimitive;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Setting;
-import io.github.armor.core.command.CommandSpec;
-import io.github.armor.core.command.CommandTable;
 import java.util.Arrays;
 import java.util.List;
 
 /**
  * What the core offers, as JSON: every command (with its aliases, kind, arguments and summary),
- * every exit code and every setting. Printed by {@code --catalogue} and answered to the
- * {@code catalogue} socket operation; the Python catalogue, the node's parameters and the
- * documentation tables are generated from it or checked against it.
+ * every exit code and every setting. Printed by {@code --catalogue}, answered to the
+ * {@code catalogue} socket operation and to the GET CATALOGUE directive (plugins' commands
+ * included); the Python catalogue, the node's parameters and the documentation tables are
+ * generated from it or checked against it.
  */
 public final class Catalogue {
     /** Bumped when the shape of the JSON changes (not when commands are added). */
