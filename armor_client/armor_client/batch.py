@@ -11,9 +11,8 @@ from typing import Any, List, Optional, Sequence
 from armor_client.errors import ArmorRolledBackError, ArmorServiceInternalError, error_for
 from armor_client.operations import Manipulations, Words
 from armor_client.transport import ArmorTransport, directive
+from armor_contract.exit_codes import ExitCode
 from armor_msgs.msg import ArmorDirectiveReq
-
-ROLLED_BACK = 212
 
 
 class BatchBase(Manipulations):
@@ -56,12 +55,12 @@ def list_error(responses: Sequence[Any]) -> ArmorServiceInternalError:
         ``responses`` (all of them) added.
     """
     for index, response in enumerate(responses):
-        if not response.success and response.exit_code != ROLLED_BACK:
+        if not response.success and response.exit_code != ExitCode.ROLLED_BACK:
             error = error_for(response)
             error.index = index
             break
     else:
-        error = ArmorRolledBackError('the list was rolled back', ROLLED_BACK)
+        error = ArmorRolledBackError('the list was rolled back', ExitCode.ROLLED_BACK)
         error.index = None
     error.responses = list(responses)
     return error

@@ -11,6 +11,8 @@ codes; every one of them is still an ``ArmorServiceInternalError``.
 
 from typing import Any, Dict, List, Optional, Type
 
+from armor_contract.exit_codes import ExitCode
+
 
 class ArmorError(Exception):
     """Base of every error the ARMOR client raises.
@@ -109,14 +111,19 @@ class ArmorCoreUnavailableError(ArmorServiceInternalError):
 
 
 _CLASS_OF_CODE: Dict[int, Type[ArmorServiceInternalError]] = {
-    **dict.fromkeys((102, 203), ArmorMountError),
-    **dict.fromkeys((101, 201, 202, 205, 207, 208, 215, 221, 223), ArmorArgumentError),
-    206: ArmorUnknownReferenceError,
-    **dict.fromkeys((209, 213, 214, 218, 222), ArmorFileError),
-    **dict.fromkeys((210, 217, 219), ArmorReasonerError),
-    211: ArmorTimeLimitError,
-    212: ArmorRolledBackError,
-    216: ArmorCoreUnavailableError,
+    **dict.fromkeys((ExitCode.REFERENCE_MOUNTED, ExitCode.MOUNT_REFUSED), ArmorMountError),
+    **dict.fromkeys((ExitCode.BAD_DATA_TYPE, ExitCode.NO_REFERENCE_NAME, ExitCode.NO_COMMAND,
+                     ExitCode.UNKNOWN_COMMAND, ExitCode.WRONG_ARGUMENTS, ExitCode.BAD_SYNTAX,
+                     ExitCode.AMBIGUOUS_NAME, ExitCode.TOO_LARGE,
+                     ExitCode.FEDERATED_QUERY_DISABLED), ArmorArgumentError),
+    ExitCode.UNKNOWN_REFERENCE: ArmorUnknownReferenceError,
+    **dict.fromkeys((ExitCode.LOAD_FAILED, ExitCode.PATH_NOT_ALLOWED, ExitCode.REFERENCE_EXISTS,
+                     ExitCode.WEB_LOADING_DISABLED, ExitCode.IMPORTS_UNRESOLVED), ArmorFileError),
+    **dict.fromkeys((ExitCode.REASONER_FAILED, ExitCode.INCONSISTENT, ExitCode.NOT_SUPPORTED),
+                    ArmorReasonerError),
+    ExitCode.TIMEOUT: ArmorTimeLimitError,
+    ExitCode.ROLLED_BACK: ArmorRolledBackError,
+    ExitCode.CORE_UNAVAILABLE: ArmorCoreUnavailableError,
 }
 
 
