@@ -41,8 +41,9 @@ class PlannerBridge:
         Returns:
             The problem's text; the same state gives the same bytes.
         """
+        # One string answers; joined, an answer without it reads as no text rather than failing.
         return self._execute(('QUERY', 'PDDL', 'PROBLEM'), [mapping_argument(mapping)],
-                             lambda response: response.queried_objects[0])
+                             lambda response: ''.join(response.queried_objects))
 
     def save_pddl_problem(self, mapping: MappingArgument, path: str) -> None:
         """Write that PDDL problem to a file on the node's machine (SAVE PDDL PROBLEM).

@@ -138,7 +138,7 @@ class Extensions:
         self._logger = logger
 
     def close(self) -> None:
-        """Call close() of every loaded extension that has one, each guarded."""
+        """Close every loaded extension that has a close method, each guarded."""
         for extension in self._loaded:
             close = getattr(extension, 'close', None)
             if callable(close):

@@ -136,8 +136,8 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
     Parameter('preload_buffered_reasoner', 'boolean', False,
               'its reasoner sees changes only at REASON'),
     Parameter('extensions', 'string_array', [],
-              'Python extensions to load (entry points of group armor_service.extensions; a string '
-              'array or names separated by commas)', also_string=name_list),
+              'Python extensions to load (entry points of group armor_service.extensions; '
+              'a string array or names separated by commas)', also_string=name_list),
     Parameter('plugin_dir', 'string', '',
               'deprecated since 0.3.0: one directory, added to plugin_dirs'),
 )

@@ -8,7 +8,7 @@ from setuptools import setup
 
 setup(
     name='armor-hello-extension',
-    version='0.2.0',
+    version='0.3.0',
     packages=['armor_hello_extension'],
     description='Example extension of the ARMOR node: a service and a directive topic',
     license='Apache-2.0',
