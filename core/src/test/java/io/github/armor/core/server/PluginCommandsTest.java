@@ -70,6 +70,8 @@ class PluginCommandsTest {
                                 try { Thread.sleep(Long.parseLong(c.arg(2))); }
                                 catch (InterruptedException e) { throw new IllegalStateException(e); }
                                 return c.ok(); });
+                    table.command("QUERY MARK REASONING").summary("brings the reasoner up to date")
+                            .query(c -> { c.reference().reason(); return c.ok(); });
                     table.command("QUERY MARK SLEEPING").args("ms").summary("holds the reference a while")
                             .query(c -> {
                                 try { Thread.sleep(Long.parseLong(c.arg(0))); }
@@ -127,14 +129,19 @@ class PluginCommandsTest {
     }
 
     private ArmorCore core(long lockWaitMs, Path stateDir) {
+        return core(lockWaitMs, stateDir, 0, "HERMIT");
+    }
+
+    private ArmorCore core(long lockWaitMs, Path stateDir, long reasonerTimeoutMs, String reasoner) {
         CoreConfig.Durability durability = stateDir == null ? CoreConfig.Durability.NONE
                 : new CoreConfig.Durability(stateDir, true, true, 1000, 3600);
         cores.forEach(ArmorCore::close);
         ArmorCore core = new ArmorCore(new CoreConfig(true, "HERMIT", List.of(ONTOLOGIES, scratch), false, lockWaitMs,
-                0, 0, durability, new CoreConfig.Safeguards(30_000, false, false, false, LIMIT_MS)), table);
+                reasonerTimeoutMs, 0, durability, new CoreConfig.Safeguards(30_000, false, false, false, LIMIT_MS)),
+                table);
         core.restoreState();
         cores.add(core);
-        ok(core, "c", "map", "LOAD FILE", ROBOTICS, "", "false", "HERMIT", "false");
+        ok(core, "c", "map", "LOAD FILE", ROBOTICS, "", "false", reasoner, "false");
         return core;
     }
 
@@ -164,7 +171,7 @@ class PluginCommandsTest {
         assertEquals("core", table.find("QUERY IND CLASS").orElseThrow().origin());
         assertTrue(table.find("QUERY BROKEN -").isEmpty());
         assertTrue(table.find("QUERY CLASH -").isEmpty());
-        assertEquals(CommandTable.standard().catalogue().size() + 7, table.catalogue().size());
+        assertEquals(CommandTable.standard().catalogue().size() + 8, table.catalogue().size());
     }
 
     @Test
@@ -226,6 +233,39 @@ class PluginCommandsTest {
         assertEquals(spins, spins(), "the looping thread was stopped");
         ok(core, "c", "map", "ADD MARK IND", "robot2", "Robot");
         assertEquals(List.of(iri("robot1"), iri("robot2")), robots(core));
+    }
+
+    @Test
+    void aLoopingPluginInAListIsStoppedAndTheWholeListUndone() {
+        ArmorCore core = core(30_000, null);
+        ArmorCore.ListResponse list = core.executeList(List.of(
+                Directive.of("c", "map", "ADD", "MARK", "IND", "robot2", "Robot"),
+                Directive.of("c", "map", "ADD", "MARK", "LOOPING", "robot3", "Robot")));
+        assertFalse(list.success());
+        assertEquals(ExitCode.ROLLED_BACK.code(), list.responses().get(0).exitCode());
+        assertEquals(ExitCode.TIMEOUT.code(), list.responses().get(1).exitCode());
+        assertEquals(List.of(iri("robot1")), robots(core));
+    }
+
+    @Test
+    void aPluginsReasonerCallsAreBoundByTheReasonerTimeLimit() throws Exception {
+        java.lang.reflect.Field block = io.github.armor.core.BlockingReasonerFactory.class.getDeclaredField("BLOCK_MS");
+        block.setAccessible(true);
+        java.util.concurrent.atomic.AtomicLong blockMs = (java.util.concurrent.atomic.AtomicLong) block.get(null);
+        ArmorCore core = core(30_000, null, 200, io.github.armor.core.BlockingReasonerFactory.class.getName());
+        blockMs.set(60_000);
+        try {
+            long start = System.nanoTime();
+            Response reasoned = run(core, "c", "map", "QUERY MARK REASONING");
+            long tookMs = (System.nanoTime() - start) / 1_000_000;
+            assertEquals(ExitCode.TIMEOUT.code(), reasoned.exitCode(), reasoned.errorDescription());
+            assertTrue(reasoned.errorDescription().contains("exceeded the reasoner time limit of 200 ms"),
+                    reasoned.errorDescription());
+            assertTrue(tookMs < LIMIT_MS, "took " + tookMs + " ms: the reasoner limit, not the plugin's, ended it");
+        } finally {
+            blockMs.set(0);
+        }
+        assertEquals(List.of(iri("robot1")), robots(core));
     }
 
     @Test
