@@ -11,6 +11,7 @@ package shows that an extension failing at start, or in a callback, does not sto
 
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 import time
@@ -38,9 +39,11 @@ def failing_service(context):
 
 def install(site: pathlib.Path) -> None:
     """pip-install the example into `site`, and write a test-only extension package beside it."""
+    # From a copy: building in place would leave build/ and egg-info in the repository.
+    source = shutil.copytree(REPO / 'examples' / 'plugins' / 'hello_extension',
+                             site.parent / 'hello_extension')
     subprocess.run([sys.executable, '-m', 'pip', 'install', '--quiet', '--no-deps',
-                    '--no-build-isolation', '--target', str(site),
-                    str(REPO / 'examples' / 'plugins' / 'hello_extension')],
+                    '--no-build-isolation', '--target', str(site), str(source)],
                    check=True, timeout=300, capture_output=True)
     (site / 'broken_extension.py').write_text(BROKEN)
     info = site / 'broken_extension-0.1.dist-info'
@@ -142,8 +145,7 @@ def test_an_extension_failing_at_start_or_in_a_callback_does_not_stop_the_node(e
     assert armor.call(directive('t', '', 'GET', 'ALL', 'REFS'), timeout_s=120).success
 
 
-def test_an_extension_nobody_installed_stops_the_node_naming_the_installed_ones(extended,
-                                                                                 tmp_path):
+def test_an_extension_nobody_installed_stops_the_node_naming_the_installed(extended, tmp_path):
     site = extended[3]
     saved = os.environ.get('PYTHONPATH', '')
     os.environ['PYTHONPATH'] = os.pathsep.join(filter(None, [str(site), saved]))

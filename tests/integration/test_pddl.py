@@ -98,8 +98,8 @@ def test_armor_call_prints_a_problem_the_planner_solves(surveillance, surveillan
     assert surveillance.pddl_problem(str(surveillance_mapping)) == problem
 
 
-def test_after_a_fact_changes_over_ros_the_problem_and_plan_change(surveillance,
-                                                                    surveillance_mapping):
+def test_after_a_fact_changes_over_ros_the_problem_and_plan_change(
+        surveillance, surveillance_mapping):
     before = surveillance.pddl_problem(str(surveillance_mapping))
     # 50 s later R2 (visited at 60) and R4 (at 80) are older than the threshold of 60 s...
     surveillance.replace_data_value('now', 'robot', 150, 100, 'LONG')

@@ -49,6 +49,11 @@ public final class MarkCommands implements CommandGroup {
                     throw new ArmorException(ExitCode.BAD_DATA_TYPE, "refused by the plugin"); });
         table.command("ADD MARK LOOPING").args("ind", "class").summary("asserts, then spins")
                 .manipulation(c -> { mark(c); while (true) { spins++; } });
+        table.command("ADD MARK STUBBORN").args("ind", "class").summary("spins through stop()")
+                .manipulation(c -> { mark(c);
+                    while (true) {
+                        try { while (true) { spins++; } } catch (Throwable ignored) { }
+                    } });
         table.command("QUERY MARK SLEEPING").args("ms").summary("holds the reference a while")
                 .query(c -> {
                     try { Thread.sleep(Long.parseLong(c.arg(0))); }
@@ -97,8 +102,8 @@ def plugged(tmp_path_factory):
     hello = build_example(scratch / 'hello')
     marks = build_marks(scratch / 'build', scratch / 'marks')
     node = start_node(scratch, '-p', f'plugin_dirs:={hello}:{marks}',
-                      '-p', f'plugin_timeout_ms:={LIMIT_MS}', '-p', f'lock_wait_ms:={LOCK_WAIT_MS}',
-                      namespace='/plugged')
+                      '-p', f'plugin_timeout_ms:={LIMIT_MS}',
+                      '-p', f'lock_wait_ms:={LOCK_WAIT_MS}', namespace='/plugged')
     transport = ArmorTransport(namespace='/plugged', service_wait_s=90.0)
     assert transport.call(directive('t', '', 'GET', 'ALL', 'REFS'), timeout_s=120).success, \
         node.log()
@@ -247,6 +252,27 @@ def test_a_plugin_change_survives_a_killed_core(plugged):
     assert list(answer.queried_objects) == [iri('kitchen')]
     assert node.core_pid() != first
     assert send(armor, 'robotics', 'REMOVE IND CLASS', 'kitchen', 'Greeted').success
+
+
+def test_a_plugin_that_cannot_be_stopped_costs_a_core_restart_and_no_acknowledged_change(
+        plugged):
+    node, armor = plugged
+    assert send(armor, 'robotics', 'ADD GREETING', 'office').success
+    first = node.core_pid()
+    # It swallows the ThreadDeath of stop(): the core cannot vouch for the reference and exits.
+    stubborn = send(armor, 'robotics', 'ADD MARK STUBBORN', 'robot9', 'Robot')
+    assert stubborn.exit_code == 216, stubborn.error_description
+    deadline = time.monotonic() + 120
+    while True:
+        answer = send(armor, 'robotics', 'QUERY GREETING')
+        if answer.success or time.monotonic() > deadline:
+            break
+        time.sleep(0.2)
+    assert list(answer.queried_objects) == [iri('office')]
+    assert send(armor, 'robotics', 'QUERY IND CLASS', 'Robot').queried_objects == iris('robot1')
+    assert node.core_pid() != first and node.process.poll() is None
+    assert 'ADD MARK STUBBORN (plugin marks.jar) cannot be stopped' in node.log()
+    assert send(armor, 'robotics', 'REMOVE IND CLASS', 'office', 'Greeted').success
 
 
 def test_plugin_dirs_as_an_array_and_the_deprecated_plugin_dir(tmp_path):

@@ -1,8 +1,9 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 """A tiny ROS-side extension of the ARMOR node (docs/extending.md).
 
-    pip install examples/plugins/hello_extension
-    armor serve --ros-args -p extensions:=hello
+Install it and name it in the node's parameter:
+pip install examples/plugins/hello_extension, then
+armor serve --ros-args -p extensions:=hello.
 """
 from setuptools import setup
 

@@ -23,11 +23,12 @@ class HelloExtension:
         self.context = context
         context.create_service(Trigger, 'armor_hello/references', self.references)
         self.answers = context.create_publisher(ArmorDirectiveRes, 'armor_hello/answers', 10)
-        context.create_subscription(ArmorDirectiveReq, 'armor_hello/directives', self.directive, 10)
+        context.create_subscription(ArmorDirectiveReq, 'armor_hello/directives', self.directive,
+                                    10)
         context.logger.info('serving armor_hello/references and armor_hello/directives')
 
     def references(self, request, response):
-        """Answer the loaded references (Trigger: message holds them, space-separated)."""
+        """Answer the loaded references, space-separated in the Trigger's message."""
         answer = self.context.call('', 'GET', 'ALL', 'REFS')
         response.success = answer.success
         response.message = (' '.join(answer.queried_objects) if answer.success
