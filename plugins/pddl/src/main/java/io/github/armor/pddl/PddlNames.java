@@ -22,8 +22,11 @@ import org.semanticweb.owlapi.model.IRI;
  */
 final class PddlNames {
     private static final Pattern NAME = Pattern.compile("[a-z][a-z0-9_-]*");
+    // Words of PDDL's syntax: no name may be one of these.
     private static final Set<String> KEYWORDS = Set.of("and", "or", "not", "imply", "exists", "forall", "when",
-            "either", "object", "define", "domain", "problem", "number");
+            "either", "define", "domain", "problem");
+    // Names PDDL predefines: a mapping may use them (the type object), an individual is not named so.
+    private static final Set<String> PREDEFINED = Set.of("object", "number");
 
     private PddlNames() {}
 
@@ -50,7 +53,8 @@ final class PddlNames {
             previous = c;
         }
         String made = name.toString();
-        if (made.isEmpty() || !Character.isLetter(made.charAt(0)) || KEYWORDS.contains(made)) {
+        if (made.isEmpty() || !Character.isLetter(made.charAt(0)) || KEYWORDS.contains(made)
+                || PREDEFINED.contains(made)) {
             made = "x-" + made;
         }
         return made.endsWith("-") ? made + "x" : made;

@@ -191,6 +191,8 @@ class PddlCommandsTest {
         assertEquals("charging-station", PddlNames.sanitise("ChargingStation"));
         assertEquals("x-1st-floor", PddlNames.sanitise("1st floor"));
         assertEquals("x-and", PddlNames.sanitise("and"));
+        assertEquals("x-object", PddlNames.sanitise("Object"));
+        assertEquals("object", PddlNames.valid("Object", "types"));
         assertEquals("caf-bar", PddlNames.sanitise("café.bar"));
         ok("ADD IND CLASS", "r1", "Room");
         ok("ADD IND CLASS", "<http://other.org/x#R1>", "Room");
