@@ -50,11 +50,6 @@ record PddlProblem(String name, String domain, String reference, SortedMap<Strin
         return text.toString();
     }
 
-    /** How many objects it has. */
-    int objectCount() {
-        return objects.values().stream().mapToInt(SortedSet::size).sum();
-    }
-
     static String fact(String predicate, List<String> arguments) {
         return arguments.isEmpty() ? "(" + predicate + ")"
                 : "(" + predicate + " " + arguments.stream().collect(Collectors.joining(" ")) + ")";
