@@ -107,7 +107,8 @@ public final class CommandTable {
         URL first = location(one);
         URL second = location(other);
         // Compared as text: URL.equals would resolve host names.
-        return first == null ? second == null : second != null && first.toExternalForm().equals(second.toExternalForm());
+        return first == null ? second == null
+                : second != null && first.toExternalForm().equals(second.toExternalForm());
     }
 
     /** The file name of the jar a plugin's class was loaded from. */
