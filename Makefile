@@ -43,4 +43,4 @@ bench: setup  ## run the benchmark suite and write bench/REPORT.md
 	  && mvn -B -q -o -f core/pom.xml test-compile && python bench/suite.py
 
 clean:  ## remove build products (keeps the Maven and pip caches)
-	rm -rf .venv build install log core/target
+	rm -rf .venv build install log core/target plugins/*/target
