@@ -26,6 +26,10 @@ run-clean: setup  ## like run, but first delete what earlier sessions changed (r
 demo: setup  ## run the surveillance tutorial against a running service (make run first)
 	source install/setup.bash && python examples/surveillance_demo.py
 
+.PHONY: demo-plan
+demo-plan: setup  ## the tutorial, its robot following PDDL plans (pyperplan) over ARMOR's problems
+	source install/setup.bash && python examples/surveillance_demo.py --plan
+
 test: setup  ## run the whole test suite: JUnit (core) and pytest (node over real ROS 2)
 	bash tools/test.sh
 
@@ -39,4 +43,4 @@ bench: setup  ## run the benchmark suite and write bench/REPORT.md
 	  && mvn -B -q -o -f core/pom.xml test-compile && python bench/suite.py
 
 clean:  ## remove build products (keeps the Maven and pip caches)
-	rm -rf .venv build install log core/target
+	rm -rf .venv build install log core/target plugins/*/target

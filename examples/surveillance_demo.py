@@ -16,19 +16,28 @@ low battery -> the charging station; else the reachable urgent room visited long
 else the reachable corridor visited longest ago. Each move is one atomic batch (position,
 clock, visit time, battery), sent while the demo holds the reference's mount.
 
+With ``--plan`` the robot follows a plan instead: each step ARMOR generates a PDDL problem
+from what the reasoner infers (QUERY PDDL PROBLEM under examples/pddl/surveillance-mapping.yaml:
+visit every Urgent room, then recharge; only recharge while LowBattery), pyperplan solves it
+for examples/pddl/surveillance-domain.pddl, and the robot makes the plan's first move. The
+rules' choice is printed beside it.
+
 Run it against a running service (``make run`` in another terminal, then ``make demo``):
-    python examples/surveillance_demo.py [--steps 12]
+    python examples/surveillance_demo.py [--steps 12] [--plan]
 """
 
 import argparse
 import dataclasses
 import pathlib
 import sys
-from typing import Callable, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 from armor_client import Armor, ArmorError, Reasoner, Reference
 
 ONTOLOGY = pathlib.Path(__file__).resolve().parents[1] / 'ontologies' / 'surveillance.owl'
+PDDL = pathlib.Path(__file__).resolve().parent / 'pddl'
+DOMAIN = PDDL / 'surveillance-domain.pddl'
+MAPPING = PDDL / 'surveillance-mapping.yaml'
 REFERENCE = 'surveillance'
 ROBOT = 'robot'
 STEP_S = 10
@@ -49,6 +58,8 @@ class Step:
         reachable: the locations it could reach (its own excluded).
         target: where it decided to go (its own location: stay and recharge).
         reason: why, in words.
+        plan: in planning mode, the plan the move is the first step of.
+        rules: in planning mode, what the rules would have chosen: (target, reason).
     """
 
     time: int
@@ -59,11 +70,52 @@ class Step:
     reachable: List[str]
     target: str
     reason: str
+    plan: Tuple[Tuple[str, ...], ...] = ()
+    rules: Optional[Tuple[str, str]] = None
 
     def __str__(self) -> str:
-        return (f't={self.time:>3}s  in {self.location:<2}  battery {self.battery:>3}%  '
+        line = (f't={self.time:>3}s  in {self.location:<2}  battery {self.battery:>3}%  '
                 f'urgent: {" ".join(self.urgent) or "-":<12} '
                 f'reach: {" ".join(self.reachable):<12} -> {self.target} ({self.reason})')
+        if self.rules is not None:
+            line += f'  | rules: {self.rules[0]} ({self.rules[1]})'
+        return line
+
+
+class Planner:
+    """The planning mode: a PDDL problem of the robot's state from ARMOR, a plan from pyperplan.
+
+    Args:
+        domain: the PDDL domain file.
+        mapping: the mapping file (sent as text, so the node needs no access to it).
+    """
+
+    def __init__(self, domain: pathlib.Path = DOMAIN, mapping: pathlib.Path = MAPPING):
+        # examples/pddl/planning.py: runs pyperplan and checks its plans.
+        sys.path.insert(0, str(PDDL))
+        import planning
+        import yaml
+        self.planning: Any = planning
+        self.domain = domain
+        self.mapping: Dict[str, Any] = yaml.safe_load(mapping.read_text())
+
+    def plan(self, reference: Reference, robot: str,
+             low_battery: bool) -> Tuple[Tuple[str, ...], ...]:
+        """A plan from the robot's state, replayed against the domain before it is trusted.
+
+        Args:
+            reference: the surveillance reference.
+            robot: the robot individual.
+            low_battery: whether the reasoner finds it LowBattery (then it only recharges).
+
+        Returns:
+            The plan's actions, each (name, argument, ...).
+        """
+        mapping = dict(self.mapping, goal=[['recharged', robot]]) if low_battery else self.mapping
+        problem = reference.pddl_problem(mapping)
+        found = self.planning.solve(self.domain, problem)
+        self.planning.validate(self.domain.read_text(), problem, found.steps)
+        return tuple(found.steps)
 
 
 class SurveillanceRobot:
@@ -72,11 +124,14 @@ class SurveillanceRobot:
     Args:
         reference: the loaded surveillance ontology.
         robot: the robot individual.
+        planner: when given, the robot follows its plans (and reports the rules' choice).
     """
 
-    def __init__(self, reference: Reference, robot: str = ROBOT):
+    def __init__(self, reference: Reference, robot: str = ROBOT,
+                 planner: Optional[Planner] = None):
         self.reference = reference
         self.robot = robot
+        self.planner = planner
 
     def reachable(self, cls: str, here: str) -> List[str]:
         """The instances of cls the robot can reach, as the reasoner answers a DL query.
@@ -107,8 +162,17 @@ class SurveillanceRobot:
         beliefs = Step(now, here, battery, low_battery, ref.instances('Urgent'),
                        self.reachable('Location', here), '', '')
         target, reason = self.decide(here, low_battery, visits, now)
-        self.act(here, target, now, battery, visits)
-        return dataclasses.replace(beliefs, target=target, reason=reason)
+        if self.planner is None:
+            self.act(here, target, now, battery, visits)
+            return dataclasses.replace(beliefs, target=target, reason=reason)
+        plan = self.planner.plan(ref, self.robot, low_battery)
+        # PDDL names are lower case; the ontology's are R1, C1, E.
+        places = {place.lower(): place for place in visits}
+        shown = ['recharge' if action[0] == 'recharge' else places[action[3]] for action in plan]
+        planned = here if plan[0][0] == 'recharge' else places[plan[0][3]]
+        self.act(here, planned, now, battery, visits)
+        return dataclasses.replace(beliefs, target=planned, reason='plan: ' + ' '.join(shown),
+                                   plan=plan, rules=(target, reason))
 
     def decide(self, here: str, low_battery: bool, visits: Dict[str, int],
                now: int) -> Tuple[str, str]:
@@ -182,7 +246,7 @@ def load_fresh(armor: Armor, name: str = REFERENCE,
 
 
 def run(armor: Armor, steps: int, name: str = REFERENCE,
-        report: Optional[Callable[[Step], None]] = None) -> List[Step]:
+        report: Optional[Callable[[Step], None]] = None, plan: bool = False) -> List[Step]:
     """Run the patrol for some steps while holding the reference's mount.
 
     Args:
@@ -190,12 +254,13 @@ def run(armor: Armor, steps: int, name: str = REFERENCE,
         steps: how many steps.
         name: the reference name to load the ontology as.
         report: called with each step as it happens.
+        plan: follow plans of a PDDL planner instead of the rules.
 
     Returns:
         The steps.
     """
     reference = load_fresh(armor, name)
-    robot = SurveillanceRobot(reference)
+    robot = SurveillanceRobot(reference, planner=Planner() if plan else None)
     done: List[Step] = []
     with reference.mounted():
         for _ in range(steps):
@@ -219,11 +284,17 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument('--reference', default=REFERENCE,
                         help=f'reference name to load the ontology as (default: {REFERENCE})')
     parser.add_argument('--namespace', default='', help='namespace of the ARMOR node')
+    parser.add_argument('--plan', action='store_true',
+                        help='move as plans of a PDDL planner say (pyperplan over the problem '
+                        'ARMOR generates), the rules\' choice printed beside')
     args = parser.parse_args(argv)
     print(f'Loading {ONTOLOGY.name} as "{args.reference}" (Pellet); the robot starts in E.')
+    if args.plan:
+        print(f'Planning: {MAPPING.name} for {DOMAIN.name}; each step follows the first action '
+              'of a new plan.')
     try:
         with Armor('surveillance_demo', namespace=args.namespace) as armor:
-            run(armor, args.steps, args.reference, report=print)
+            run(armor, args.steps, args.reference, report=print, plan=args.plan)
     except ArmorError as error:
         print(f'ARMOR failed: {error}', file=sys.stderr)
         return 1

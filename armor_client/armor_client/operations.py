@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 from armor_client.errors import error_for
+from armor_client.planning import PlannerBridge
 from armor_contract import catalogue
 from armor_client.values import answer_value, entity_iri, short_name, typed_argument, Value
 
@@ -1152,7 +1153,7 @@ class SessionCommands:
         return self._session('', ('LOG', 'FILE', 'ON'), [path], Answers.nothing)
 
 
-class ReferenceBase(Manipulations, Queries, ReferenceCommands):
+class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge):
     """What Reference and AsyncReference share: the state, and reading an answer.
 
     Args:

@@ -37,6 +37,7 @@ class Command:
         variadic: the last required argument may be repeated.
         changes_ontology: whether it can change what an ontology says.
         summary: one line saying what it does.
+        origin: ``core`` for a built-in command, else the file name of the plugin jar.
     """
 
     words: Tuple[str, str, str]
@@ -47,6 +48,7 @@ class Command:
     variadic: bool
     changes_ontology: bool
     summary: str
+    origin: str = 'core'
 
     @property
     def name(self) -> str:
@@ -120,7 +122,8 @@ def parse(data: Dict[str, Any]) -> Catalogue:
         words=_words(entry['key']), aliases=tuple(_words(a) for a in entry['aliases']),
         kind=entry['kind'], required=tuple(entry['args']['required']),
         optional=tuple(entry['args']['optional']), variadic=entry['args']['variadic'],
-        changes_ontology=entry['changes_ontology'], summary=entry['summary'])
+        changes_ontology=entry['changes_ontology'], summary=entry['summary'],
+        origin=entry.get('origin', 'core'))
         for entry in data['commands'])
     codes = tuple(ExitCodeEntry(e['code'], e['name'], e['meaning']) for e in data['exit_codes'])
     settings = tuple(Setting(s['key'], s['type'], s['default'], s['description'], s['read_only'])

@@ -16,7 +16,8 @@ from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service import wire
 from armor_service.core_process import CoreProcess, CoreUnavailable
-from armor_service.parameters import all_parameters, Parameter
+from armor_service.extensions import load_extensions
+from armor_service.parameters import all_parameters, core_settings, Parameter
 import rclpy
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
@@ -31,7 +32,7 @@ class ArmorService(Node):
         super().__init__('armor_service')
         self._armor_parameters = {p.name: p for p in all_parameters()}
         self._declare_parameters()
-        settings = {p.name: self._value(p.name) for p in self._armor_parameters.values() if p.core}
+        settings = core_settings(self._value, self.get_logger().warning)
         settings['state_dir'] = settings['state_dir'] or self._default_state_dir()
         self._core = CoreProcess(
             self._core_jar(), settings, jvm_options=tuple(self._value('jvm_options')),
@@ -47,6 +48,7 @@ class ArmorService(Node):
         self.create_service(ArmorDirectiveList, LIST_SERVICE,
                             self.directive_list_callback, qos_profile=SERVICE_QOS,
                             callback_group=group)
+        self._extensions = load_extensions(self, self._value('extensions'))
         self.get_logger().info(
             f'ARMOR ready: services {self.resolve_service_name(DIRECTIVE_SERVICE)} and '
             f'{self.resolve_service_name(LIST_SERVICE)}; core pid '
@@ -89,6 +91,7 @@ class ArmorService(Node):
         return response
 
     def shutdown_core(self) -> None:
+        self._extensions.close()
         self._core.stop()
 
     def _timed_out(self):

@@ -31,6 +31,13 @@ def path_list(value: Any) -> List[str]:
     return list(value)
 
 
+def name_list(value: Any) -> List[str]:
+    """Names as typed: a string array, or one string of names separated by commas or spaces."""
+    if isinstance(value, str):
+        return [part for part in value.replace(',', ' ').split() if part]
+    return list(value)
+
+
 def option_list(value: Any) -> List[str]:
     """Command-line options as typed: a string array, or one string split as by a shell."""
     if isinstance(value, str):
@@ -81,12 +88,18 @@ _NODE_DEFAULTS: Dict[str, Tuple[Callable[[], Any], str]] = {
     'allowed_dirs': (lambda: [os.getcwd(), os.path.expanduser('~'), tempfile.gettempdir()],
                      'working dir, home, temp dir'),
     'state_dir': (lambda: '', '`$XDG_DATA_HOME/armor_ros2/domain<ID>/<node name>`'),
+    # The plugins make setup installed (the PDDL bridge): install/setup.bash exports them.
+    'plugin_dirs': (lambda: path_list(os.environ.get('ARMOR_PLUGIN_DIRS', '')),
+                    '`$ARMOR_PLUGIN_DIRS` (the installed plugins)'),
 }
 _NODE_DESCRIPTIONS = {
     'allowed_dirs': ' (a string array, one path, or paths joined by ":")',
     'state_dir': ' (empty: the default directory)',
+    'plugin_dirs': ' (a string array, one path, or paths joined by ":")',
 }
-_ALSO_STRING = {'allowed_dirs': path_list}
+_ALSO_STRING = {'allowed_dirs': path_list, 'plugin_dirs': path_list}
+# Parameters of earlier releases still accepted: name -> (the parameter whose list it joins).
+DEPRECATED_ALIASES = {'plugin_dir': 'plugin_dirs'}
 
 
 def core_parameters() -> Tuple[Parameter, ...]:
@@ -122,9 +135,33 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
               'its changes wait for APPLY'),
     Parameter('preload_buffered_reasoner', 'boolean', False,
               'its reasoner sees changes only at REASON'),
+    Parameter('extensions', 'string_array', [],
+              'Python extensions to load (entry points of group armor_service.extensions; '
+              'a string array or names separated by commas)', also_string=name_list),
+    Parameter('plugin_dir', 'string', '',
+              'deprecated since 0.3.0: one directory, added to plugin_dirs'),
 )
 
 
 def all_parameters() -> Tuple[Parameter, ...]:
     """The core's settings, then the node's own parameters."""
     return core_parameters() + NODE_PARAMETERS
+
+
+def core_settings(value: Callable[[str], Any], warn: Callable[[str], None]) -> Dict[str, Any]:
+    """The settings handed to the core: each core parameter's value, deprecated aliases joined.
+
+    Args:
+        value: the value of a parameter, by name, as the node read it.
+        warn: says that a deprecated parameter was used and what replaces it.
+
+    Returns:
+        Setting key -> value.
+    """
+    settings = {p.name: value(p.name) for p in core_parameters()}
+    for alias, target in DEPRECATED_ALIASES.items():
+        given = value(alias)
+        if given:
+            warn(f'parameter {alias} is deprecated: use {target} (a list); {given} is added to it')
+            settings[target] = [*settings[target], *path_list(given)]
+    return settings

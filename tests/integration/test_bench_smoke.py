@@ -6,6 +6,7 @@ profiler and the report writer work, not that any target is met (`make bench` me
 Without owlready2 (make bench installs it, make setup does not) its rows say so.
 """
 
+import json
 import os
 import pathlib
 import re
@@ -49,3 +50,19 @@ def test_smoke_run_writes_every_section_with_figures(tmp_path):
         assert benchmark in summary, f'{benchmark} missing from the summary'
     assert '**Slowest part of the service:**' in summary
     assert '**Default for the robot\'s cycle:**' in summary
+
+
+def test_the_pddl_bridge_bench_runs(tmp_path):
+    """bench/pddl_bridge.py on a small building: every figure there, the plan valid."""
+    domain = reserve_domain()
+    env = {**os.environ, 'ROS_DOMAIN_ID': domain}
+    completed = subprocess.run(
+        [sys.executable, str(REPO / 'bench' / 'pddl_bridge.py'), '--objects', '60', '--runs', '1',
+         '--json'], env=env, capture_output=True, text=True, timeout=600)
+    release_domain(domain)
+    assert completed.returncode == 0, completed.stderr[-4000:]
+    result = json.loads(completed.stdout)
+    assert result['problem']['objects'] == result['building']['objects'] == 52
+    assert result['problem']['goal facts'] == 1 + result['building']['alarmed rooms']
+    assert result['generation']['median_s'] > 0 and result['by_hand']['calls'] > 100
+    assert result['planner']['valid'] and result['planner']['plan_length'] > 2

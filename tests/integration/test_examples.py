@@ -22,3 +22,22 @@ def test_the_demo_prints_beliefs_and_decisions(armor):
     assert lines[2].endswith('-> R1 (urgent, unvisited for 80 s)')
     assert lines[4] == 'Done. Inspect what the robot left behind: armor shell examples_test'
     Armor('examples_test', transport=armor).reference('examples_test').drop()
+
+
+def test_the_demo_plans_with_a_real_planner(armor):
+    result = subprocess.run(
+        [sys.executable, str(REPO / 'examples' / 'surveillance_demo.py'), '--steps', '2',
+         '--plan', '--reference', 'examples_plan_test'], capture_output=True, text=True,
+        timeout=300)
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert lines[1] == ('Planning: surveillance-mapping.yaml for surveillance-domain.pddl; each '
+                        'step follows the first action of a new plan.')
+    # From E the shortest plans to R1 and R3 and back go either way round.
+    assert lines[2].split('-> ')[1] in (
+        'C1 (plan: C1 R1 C1 C2 R3 C2 E recharge)  | rules: C1 (no urgent room in reach: '
+        'corridor visited longest ago)',
+        'C2 (plan: C2 R3 C2 C1 R1 C1 E recharge)  | rules: C1 (no urgent room in reach: '
+        'corridor visited longest ago)'), lines[2]
+    assert lines[3].startswith('t=110s  in C')
+    Armor('examples_test', transport=armor).reference('examples_plan_test').drop()

@@ -1,94 +1,308 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-"""A plugin jar in plugin_dir adds a command group and a reasoner factory to a running node.
+"""Plugin jars in plugin_dirs add commands and reasoner factories to a running node.
 
-The jar is built here from two tiny classes (javac against the installed core), so the test
-shows what a plugin author does: implement CommandGroup or OWLReasonerFactory, list the group
-in META-INF/services, drop the jar in the directory.
+The jars are built here as a plugin author builds them: the repository's example
+(examples/plugins/hello_command, with its build.sh) and test plugins compiled with javac
+against the installed core. Their commands run exactly like built-in ones over ROS 2: the
+mount check (102), atomic lists (212 undoes them), the journal (a change survives a killed
+core), exit codes, the reference lock; one that throws or loops answers (220, 211) within
+plugin_timeout_ms, its change undone, and the node, the core and the reference stay usable.
 """
 
 import os
 import pathlib
+import signal
 import subprocess
 import sys
+import threading
+import time
 import zipfile
 
 from armor_client import Armor, ArmorTransport, commands, directive
-from conftest import ONTOLOGIES, start_node
+from conftest import iri, iris, ONTOLOGIES, REPO, start_node
+import pytest
 
-HELLO = '''package example;
-import io.github.armor.core.api.Response;
+LIMIT_MS = 1500
+LOCK_WAIT_MS = 500
+# How long PluginGuard gives a plugin's thread to end after the interrupt, then after stop().
+GRACE_S = 2.0
+
+MARKS = '''package marks;
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.command.CommandGroup;
 import io.github.armor.core.command.CommandTable;
 import java.util.List;
-public final class HelloCommands implements CommandGroup {
+import org.semanticweb.owlapi.model.AddAxiom;
+public final class MarkCommands implements CommandGroup {
+    private static long spins;
+    private static void mark(CommandContext c) {
+        c.change(List.of(new AddAxiom(c.reference().ontology(),
+                c.factory().getOWLClassAssertionAxiom(c.owlClass(1), c.individual(0)))));
+    }
     public void register(CommandTable table) {
-        table.command("QUERY HELLO").args("name").summary("greets someone")
-                .global(c -> Response.ok(true, List.of("hello " + c.arg(0))));
+        table.command("ADD MARK FAILING").args("ind", "class").summary("asserts, then throws")
+                .manipulation(c -> { mark(c); throw new IllegalStateException("plugin bug"); });
+        table.command("ADD MARK REFUSED").args("ind", "class").summary("asserts, then refuses")
+                .manipulation(c -> { mark(c);
+                    throw new ArmorException(ExitCode.BAD_DATA_TYPE, "refused by the plugin"); });
+        table.command("ADD MARK LOOPING").args("ind", "class").summary("asserts, then spins")
+                .manipulation(c -> { mark(c); while (true) { spins++; } });
+        table.command("ADD MARK STUBBORN").args("ind", "class").summary("spins through stop()")
+                .manipulation(c -> { mark(c);
+                    while (true) {
+                        try { while (true) { spins++; } } catch (Throwable ignored) { }
+                    } });
+        table.command("QUERY MARK SLEEPING").args("ms").summary("holds the reference a while")
+                .query(c -> {
+                    try { Thread.sleep(Long.parseLong(c.arg(0))); }
+                    catch (InterruptedException e) { return c.ok(List.of("interrupted")); }
+                    return c.ok(List.of("slept"));
+                });
     }
 }
 '''
-FACTORY = '''package example;
+FACTORY = '''package marks;
 public final class TinyReasonerFactory extends org.semanticweb.HermiT.ReasonerFactory {}
 '''
 
 
-def build_plugin(work: pathlib.Path) -> pathlib.Path:
+def build_example(out: pathlib.Path) -> pathlib.Path:
+    """The repository's example plugin, built by its own script (docs/extending.md)."""
+    subprocess.run(['bash', str(REPO / 'examples' / 'plugins' / 'hello_command' / 'build.sh'),
+                    str(out)], check=True, timeout=120, capture_output=True)
+    return out
+
+
+def build_marks(work: pathlib.Path, out: pathlib.Path) -> pathlib.Path:
+    """A test plugin: commands that throw, refuse, loop and sleep, and a reasoner factory."""
     jar = pathlib.Path(os.environ['ARMOR_CORE_JAR'])
     classpath = os.pathsep.join([str(jar), str(jar.parent / 'lib' / '*')])
-    sources = work / 'src' / 'example'
+    sources = work / 'src' / 'marks'
     sources.mkdir(parents=True)
-    (sources / 'HelloCommands.java').write_text(HELLO)
+    (sources / 'MarkCommands.java').write_text(MARKS)
     (sources / 'TinyReasonerFactory.java').write_text(FACTORY)
     classes = work / 'classes'
     subprocess.run(['javac', '-d', str(classes), '-cp', classpath,
                     *map(str, sources.glob('*.java'))], check=True, timeout=120)
-    plugins = work / 'plugins'
-    plugins.mkdir()
-    with zipfile.ZipFile(plugins / 'hello.jar', 'w') as archive:
+    out.mkdir(parents=True)
+    with zipfile.ZipFile(out / 'marks.jar', 'w') as archive:
         for compiled in classes.rglob('*.class'):
             archive.write(compiled, compiled.relative_to(classes).as_posix())
         archive.writestr('META-INF/services/io.github.armor.core.command.CommandGroup',
-                         'example.HelloCommands\n')
-    return plugins
+                         'marks.MarkCommands\n')
+    return out
 
 
-def test_a_plugin_jar_adds_a_command_and_a_reasoner(tmp_path):
-    plugins = build_plugin(tmp_path / 'build')
-    node = start_node(tmp_path, '-p', f'plugin_dir:={plugins}', namespace='/plugged')
+@pytest.fixture(scope='module')
+def plugged(tmp_path_factory):
+    """A node with both plugin directories, given as one colon-separated string."""
+    scratch = tmp_path_factory.mktemp('plugged')
+    hello = build_example(scratch / 'hello')
+    marks = build_marks(scratch / 'build', scratch / 'marks')
+    node = start_node(scratch, '-p', f'plugin_dirs:={hello}:{marks}',
+                      '-p', f'plugin_timeout_ms:={LIMIT_MS}',
+                      '-p', f'lock_wait_ms:={LOCK_WAIT_MS}', namespace='/plugged')
+    transport = ArmorTransport(namespace='/plugged', service_wait_s=90.0)
+    assert transport.call(directive('t', '', 'GET', 'ALL', 'REFS'), timeout_s=120).success, \
+        node.log()
+    yield node, transport
+    transport.close()
+    node.stop()
+
+
+def send(transport, reference, words, *args, client='t'):
+    command, primary, secondary = (words.split() + ['', '', ''])[:3]
+    return transport.call(directive(client, reference, command, primary, secondary,
+                                    [str(a) for a in args]), timeout_s=120)
+
+
+def greeted(transport):
+    answer = send(transport, 'robotics', 'QUERY GREETING')
+    assert answer.success, answer.error_description
+    return sorted(answer.queried_objects)
+
+
+def test_the_example_plugin_adds_commands_clients_discover(plugged):
+    node, armor = plugged
+    hello = send(armor, '', 'QUERY HELLO', 'world')
+    assert hello.success, node.log()
+    assert list(hello.queried_objects) == ['hello world']
+    with Armor('t', namespace='/plugged') as client:
+        answered = client.catalogue()
+    origins = {command.name: command.origin for command in answered.commands}
+    assert origins['QUERY HELLO'] == 'hello.jar' and origins['ADD MARK LOOPING'] == 'marks.jar'
+    assert origins['QUERY IND CLASS'] == 'core'
+    assert 'QUERY HELLO' not in {command.name for command in commands.COMMANDS}
+    # armor query parses with the node's catalogue, so it knows the plugin's command.
+    shown = subprocess.run(
+        [sys.executable, '-m', 'armor_client.cli', 'query', '--namespace', '/plugged',
+         'robotics', 'HELLO', 'world'], capture_output=True, text=True, timeout=120)
+    assert shown.returncode == 0, shown.stderr
+    assert 'hello world' in shown.stdout
+
+
+def test_a_plugin_reasoner_factory_is_used_by_name(plugged):
+    _, armor = plugged
+    loaded = send(armor, 'tiny', 'LOAD FILE', ONTOLOGIES / 'robotics.owl',
+                  'http://www.example.org/robotics', 'false', 'marks.TinyReasonerFactory', 'false')
+    assert loaded.success, loaded.error_description
+    # The plugin's factory (HermiT under another name) infers what the built-in HermiT does.
+    rooms, expected = (send(armor, reference, 'QUERY IND CLASS', 'OccupiedRoom')
+                       for reference in ('tiny', 'robotics'))
+    assert rooms.success and list(rooms.queried_objects) == list(expected.queried_objects)
+    assert len(rooms.queried_objects) >= 1
+
+
+def test_a_plugin_change_is_mount_checked_and_undone_with_its_list(plugged):
+    _, armor = plugged
+    assert send(armor, 'robotics', 'MOUNT', client='holder').success
     try:
-        transport = ArmorTransport(namespace='/plugged', service_wait_s=90.0)
-        hello = transport.call(directive('t', '', 'QUERY', 'HELLO', '', ['world']), timeout_s=120)
-        assert hello.success, node.log()
-        assert list(hello.queried_objects) == ['hello world']
-        loaded = transport.call(directive(
-            't', 'tiny', 'LOAD', 'FILE', '', [str(ONTOLOGIES / 'robotics.owl'),
-                                              'http://www.example.org/robotics', 'false',
-                                              'example.TinyReasonerFactory', 'false']),
-            timeout_s=120)
-        assert loaded.success, loaded.error_description
-        # The plugin's factory (HermiT under another name) infers what the built-in HermiT does.
-        rooms, expected = (transport.call(directive('t', reference, 'QUERY', 'IND', 'CLASS',
-                                                    ['OccupiedRoom']), timeout_s=120)
-                           for reference in ('tiny', 'robotics'))
-        assert rooms.success and list(rooms.queried_objects) == list(expected.queried_objects)
-        assert len(rooms.queried_objects) >= 1
+        refused = send(armor, 'robotics', 'ADD GREETING', 'kitchen', client='other')
+        assert refused.exit_code == 102, refused.error_description
+        assert greeted(armor) == []
+    finally:
+        assert send(armor, 'robotics', 'UNMOUNT', client='holder').success
+    listed = armor.call_list([
+        directive('t', 'robotics', 'ADD', 'GREETING', '', ['kitchen']),
+        directive('t', 'robotics', 'QUERY', 'NOSUCH', '', [])], timeout_s=120)
+    assert not listed.success
+    assert listed.armor_responses[0].exit_code == 212, listed.armor_responses[0].error_description
+    assert greeted(armor) == []
+
+
+def test_what_a_plugin_throws_is_an_answer_and_changes_nothing(plugged):
+    node, armor = plugged
+    failed = send(armor, 'robotics', 'ADD MARK FAILING', 'robot7', 'Robot')
+    assert failed.exit_code == 220, failed.error_description
+    assert 'ADD MARK FAILING (plugin marks.jar) failed' in failed.error_description
+    refused = send(armor, 'robotics', 'ADD MARK REFUSED', 'robot7', 'Robot')
+    assert (refused.exit_code, refused.error_description) == (101, 'refused by the plugin')
+    robots = send(armor, 'robotics', 'QUERY IND CLASS', 'Robot')
+    assert robots.queried_objects == iris('robot1')
+    assert node.process.poll() is None
+
+
+def test_a_looping_plugin_is_stopped_at_its_limit_and_holds_nothing_after(plugged):
+    node, armor = plugged
+    core = node.core_pid()
+    waited = {}
+
+    def meanwhile():
+        time.sleep(0.3)
+        started = time.monotonic()
+        waited['same'] = send(armor, 'robotics', 'QUERY IND CLASS', 'Robot')
+        waited['same_s'] = time.monotonic() - started
+        started = time.monotonic()
+        waited['other'] = send(armor, 'tiny', 'QUERY IND CLASS', 'Robot')
+        waited['other_s'] = time.monotonic() - started
+
+    if send(armor, '', 'GET ALL REFS').queried_objects.count('tiny') == 0:
+        assert send(armor, 'tiny', 'LOAD FILE', ONTOLOGIES / 'robotics.owl', '', 'false',
+                    'HERMIT', 'false').success
+    other = threading.Thread(target=meanwhile)
+    started = time.monotonic()
+    other.start()
+    looped = send(armor, 'robotics', 'ADD MARK LOOPING', 'robot7', 'Robot')
+    took = time.monotonic() - started
+    other.join(timeout=60)
+    assert looped.exit_code == 211 and looped.timeout, looped.error_description
+    assert f'plugin_timeout_ms={LIMIT_MS}' in looped.error_description
+    assert LIMIT_MS / 1000 <= took < LIMIT_MS / 1000 + 2 * GRACE_S + 2.0, took
+    # Meanwhile the same reference waited lock_wait_ms and was refused; another one answered.
+    assert waited['same'].exit_code == 211, waited['same'].error_description
+    assert waited['same_s'] < LOCK_WAIT_MS / 1000 + 1.5
+    assert waited['other'].success and waited['other_s'] < 1.5, waited
+    # The loop's change is undone, the reference answers and changes, the same core serves.
+    assert send(armor, 'robotics', 'QUERY IND CLASS', 'Robot').queried_objects == iris('robot1')
+    assert send(armor, 'robotics', 'ADD GREETING', 'bedroom').success
+    assert greeted(armor) == [iri('bedroom')]
+    assert send(armor, 'robotics', 'REMOVE IND CLASS', 'bedroom', 'Greeted').success
+    assert node.core_pid() == core
+    assert 'ignored the interrupt at its time limit; stopping its thread' in node.log()
+
+
+def test_a_plugin_holds_its_reference_like_a_built_in(plugged):
+    _, armor = plugged
+    holder = {}
+    worker = threading.Thread(target=lambda: holder.setdefault(
+        'answer', send(armor, 'robotics', 'QUERY MARK SLEEPING', 1000)))
+    worker.start()
+    time.sleep(0.3)
+    busy = send(armor, 'robotics', 'ADD GREETING', 'kitchen')
+    worker.join(timeout=60)
+    assert busy.exit_code == 211 and 'stayed busy' in busy.error_description
+    assert list(holder['answer'].queried_objects) == ['slept']
+    assert greeted(armor) == []
+
+
+def test_a_plugin_change_survives_a_killed_core(plugged):
+    node, armor = plugged
+    assert send(armor, 'robotics', 'ADD GREETING', 'kitchen').success
+    first = node.core_pid()
+    os.kill(first, signal.SIGKILL)
+    deadline = time.monotonic() + 120
+    while True:
+        answer = send(armor, 'robotics', 'QUERY GREETING')
+        if answer.success or time.monotonic() > deadline:
+            break
+        assert answer.exit_code == 216, answer.error_description
+        time.sleep(0.2)
+    assert list(answer.queried_objects) == [iri('kitchen')]
+    assert node.core_pid() != first
+    assert send(armor, 'robotics', 'REMOVE IND CLASS', 'kitchen', 'Greeted').success
+
+
+def test_a_plugin_that_cannot_be_stopped_costs_a_core_restart_and_no_acknowledged_change(
+        plugged):
+    node, armor = plugged
+    assert send(armor, 'robotics', 'ADD GREETING', 'office').success
+    first = node.core_pid()
+    # It swallows the ThreadDeath of stop(): the core cannot vouch for the reference and exits.
+    stubborn = send(armor, 'robotics', 'ADD MARK STUBBORN', 'robot9', 'Robot')
+    assert stubborn.exit_code == 216, stubborn.error_description
+    deadline = time.monotonic() + 120
+    while True:
+        answer = send(armor, 'robotics', 'QUERY GREETING')
+        if answer.success or time.monotonic() > deadline:
+            break
+        time.sleep(0.2)
+    assert list(answer.queried_objects) == [iri('office')]
+    assert send(armor, 'robotics', 'QUERY IND CLASS', 'Robot').queried_objects == iris('robot1')
+    assert node.core_pid() != first and node.process.poll() is None
+    assert 'ADD MARK STUBBORN (plugin marks.jar) cannot be stopped' in node.log()
+    assert send(armor, 'robotics', 'REMOVE IND CLASS', 'office', 'Greeted').success
+
+
+def test_plugin_dirs_as_an_array_and_the_deprecated_plugin_dir(tmp_path):
+    hello = build_example(tmp_path / 'hello')
+    marks = build_marks(tmp_path / 'build', tmp_path / 'marks')
+    node = start_node(tmp_path, '-p', f'plugin_dirs:=["{marks}"]', '-p', f'plugin_dir:={hello}',
+                      namespace='/plugged_alias')
+    try:
+        transport = ArmorTransport(namespace='/plugged_alias', service_wait_s=90.0)
+        hello_answer = send(transport, '', 'QUERY HELLO', 'again')
+        assert list(hello_answer.queried_objects) == ['hello again'], node.log()
+        sleeping = send(transport, 'robotics', 'QUERY MARK SLEEPING', 1)
+        assert list(sleeping.queried_objects) == ['slept']
         transport.close()
-        # Clients learn the plugin's command from the running node: the typed client, and
-        # armor query, which parses with the catalogue.
-        with Armor('t', namespace='/plugged') as armor:
-            answered = armor.catalogue()
-        assert 'QUERY HELLO' in {command.name for command in answered.commands}
-        assert 'QUERY HELLO' not in {command.name for command in commands.COMMANDS}
-        shown = subprocess.run(
-            [sys.executable, '-m', 'armor_client.cli', 'query', '--namespace', '/plugged',
-             'robotics', 'HELLO', 'world'], capture_output=True, text=True, timeout=120)
-        assert shown.returncode == 0, shown.stderr
-        assert 'hello world' in shown.stdout
+        assert 'parameter plugin_dir is deprecated: use plugin_dirs' in node.log()
     finally:
         node.stop()
 
 
+def test_a_plugin_directory_that_does_not_exist_stops_the_node_naming_it(tmp_path):
+    missing = tmp_path / 'nowhere'
+    node = start_node(tmp_path, '-p', f'plugin_dirs:={missing}', namespace='/plugged_missing')
+    try:
+        assert node.process.wait(timeout=60) != 0
+    finally:
+        node.stop()
+    assert f"plugin_dirs entry '{missing}' is not a directory" in node.log()
+
+
 def test_without_the_plugin_the_factory_class_is_unknown(call):
     refused = call('nope', 'LOAD FILE', str(ONTOLOGIES / 'robotics.owl'), '', 'false',
-                   'example.TinyReasonerFactory', 'false')
-    assert refused.exit_code == 210 and 'plugin_dir' in refused.error_description
+                   'marks.TinyReasonerFactory', 'false')
+    assert refused.exit_code == 210 and 'plugin_dirs' in refused.error_description

@@ -47,3 +47,14 @@ def test_a_name_new_to_the_reference_is_noted_with_the_names_it_is_close_to(shel
     shell.type('QUERY IND CLASS Robott\n')
     answer = shell.wait_for(PROMPT)
     assert "note: new to the reference: class 'Robott' (did you mean Robot?)" in answer, answer
+
+
+def test_tab_completes_the_commands_of_the_nodes_plugins(shell):
+    # The PDDL bridge is a plugin the node loads by default: the shell learned it at start.
+    shell.type('QUERY PD\t')
+    shell.wait_for('PDDL ')
+    shell.type('PRO\t')
+    shell.wait_for('PROBLEM ')
+    shell.type('"{domain: d, types: [Robot]}"\n')
+    answer = shell.wait_for(PROMPT)
+    assert '(define (problem robotics)' in answer and 'robot1 - robot' in answer, answer

@@ -38,3 +38,30 @@ def test_the_robot_patrols_urgent_rooms_and_recharges(armor, demo):
     assert reference.data_values('visitedAt', 'C1') == [210]
     assert reference.mounted_by() is None
     reference.drop()
+
+
+def test_in_planning_mode_the_robot_follows_plans_to_every_urgent_room(armor, demo):
+    session = Armor('tutorial_plan_test', transport=armor, timeout_s=120)
+    steps = demo.run(session, 11, name='tutorial_plan_test', plan=True)
+    assert [step.location for step in steps[1:]] == [step.target for step in steps[:-1]]
+    for step in steps:
+        first = step.plan[0]
+        # The robot makes the plan's first move (recharge: it stays), and the rules' choice
+        # is reported beside it.
+        assert step.target == (step.location if first[0] == 'recharge' else first[3].upper())
+        assert step.rules is not None and step.rules[0] in step.reachable + [step.location]
+        # Every plan ends recharged at the charging station, and visits every room the
+        # reasoner found Urgent at that step (unless the battery is low: then it only recharges).
+        assert step.plan[-1] == ('recharge', 'robot', 'e')
+        rooms = {action[3].upper() for action in step.plan if action[0] == 'move'}
+        if step.low_battery:
+            assert not rooms & {'R1', 'R2', 'R3', 'R4'}, step.plan
+        else:
+            assert set(step.urgent) <= rooms | {step.location}, step
+    # Shortest plans: from E, R1 and R3 (urgent at 100 s) and back take 7 moves and a recharge.
+    assert len(steps[0].plan) == 8 and steps[0].urgent == ['R1', 'R3']
+    visited = [step.target for step in steps]
+    assert {'R1', 'R3'} <= set(visited[:7])
+    assert min(step.battery for step in steps) > 0
+    assert any(step.low_battery for step in steps) and steps[-1].battery == 100
+    session.reference('tutorial_plan_test').drop()

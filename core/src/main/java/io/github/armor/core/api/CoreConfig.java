@@ -54,12 +54,19 @@ public record CoreConfig(
      * @param ignoreMissingImports load an ontology whose imports cannot be resolved, listing them in the answer
      * @param strictNames          a QUERY naming an entity the reference does not know is an error (224),
      *                             not an empty answer
+     * @param pluginTimeoutMs      time limit of one command of a plugin (0 = none)
      */
     public record Safeguards(long sparqlTimeoutMs, boolean sparqlFederated, boolean ignoreMissingImports,
-                             boolean strictNames) {
+                             boolean strictNames, long pluginTimeoutMs) {
         public static final Safeguards DEFAULT = new Safeguards((Long) Setting.SPARQL_TIMEOUT_MS.defaultValue(),
                 (Boolean) Setting.SPARQL_FEDERATED.defaultValue(),
                 (Boolean) Setting.IGNORE_MISSING_IMPORTS.defaultValue(), (Boolean) Setting.STRICT_NAMES.defaultValue());
+
+        public Safeguards(long sparqlTimeoutMs, boolean sparqlFederated, boolean ignoreMissingImports,
+                          boolean strictNames) {
+            this(sparqlTimeoutMs, sparqlFederated, ignoreMissingImports, strictNames,
+                    (Long) Setting.PLUGIN_TIMEOUT_MS.defaultValue());
+        }
 
         public Safeguards(long sparqlTimeoutMs, boolean sparqlFederated, boolean ignoreMissingImports) {
             this(sparqlTimeoutMs, sparqlFederated, ignoreMissingImports, false);
@@ -99,7 +106,8 @@ public record CoreConfig(
                 new Safeguards((Long) values.get(Setting.SPARQL_TIMEOUT_MS),
                         (Boolean) values.get(Setting.SPARQL_FEDERATED),
                         (Boolean) values.get(Setting.IGNORE_MISSING_IMPORTS),
-                        (Boolean) values.get(Setting.STRICT_NAMES)));
+                        (Boolean) values.get(Setting.STRICT_NAMES),
+                        (Long) values.get(Setting.PLUGIN_TIMEOUT_MS)));
     }
 
     /** Settings for tests and embedding: full IRIs, Openllet, the given directories, generous waits. */

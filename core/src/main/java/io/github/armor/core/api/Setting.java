@@ -49,8 +49,10 @@ public enum Setting {
             "checkpoint a reference after this many journal records"),
     CHECKPOINT_EVERY_S("checkpoint_every_s", Type.INTEGER, 60L,
             "... or when it changed and its checkpoint is this old"),
-    PLUGIN_DIR("plugin_dir", Type.STRING, "",
-            "directory whose jars add command groups and reasoner factories (empty: none)");
+    PLUGIN_DIRS("plugin_dirs", Type.STRING_ARRAY, List.of(),
+            "directories whose jars add command groups and reasoner factories (docs/extending.md)"),
+    PLUGIN_TIMEOUT_MS("plugin_timeout_ms", Type.INTEGER, 60_000L,
+            "time limit of a plugin's command: then it is stopped, its changes undone, 211 (0 = none)");
 
     /** The types a setting can have; JSON and ROS parameters both have them. */
     public enum Type {

@@ -71,6 +71,7 @@ public final class Catalogue {
         args.addProperty("variadic", spec.variadic());
         entry.add("args", args);
         entry.addProperty("summary", spec.summary());
+        entry.addProperty("origin", spec.origin());
         return entry;
     }
 

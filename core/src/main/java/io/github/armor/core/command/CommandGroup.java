@@ -8,9 +8,10 @@ package io.github.armor.core.command;
  * public with a public no-argument constructor, named in a
  * {@code META-INF/services/io.github.armor.core.command.CommandGroup} file of its jar. The
  * built-in groups (references, manipulations, queries) are registered that way in the core's
- * own jar; a plugin jar placed in the core's plugin directory ({@code plugin_dir}) adds its
- * groups the same way, and its commands appear in the catalogue ({@code --catalogue}, the
- * {@code catalogue} socket operation) beside the built-in ones.
+ * own jar; a plugin jar placed in one of the core's plugin directories ({@code plugin_dirs})
+ * adds its groups the same way, and its commands appear in the catalogue ({@code --catalogue},
+ * the {@code catalogue} socket operation, GET CATALOGUE) beside the built-in ones, with the
+ * jar's name as their origin.
  *
  * <p>A group registers each command once, with its words, argument names, a one-line summary
  * and its {@link CommandKind}, through {@link CommandTable#command(String)}:
@@ -24,7 +25,11 @@ package io.github.armor.core.command;
  * }</pre>
  * The core runs every command the same way whatever group it came from: size limits, the
  * argument count, the reference lock, the mount check, journaling and rollback all follow from
- * the kind. A key registered twice stops the core at start.
+ * the kind. A plugin's command also runs on a thread of its own within {@code plugin_timeout_ms}
+ * (see {@code PluginGuard}): a long loop should check {@link Thread#interrupted()}, and a change
+ * goes through {@link CommandContext#change} so that a failure or a list's rollback undoes it.
+ * A key registered twice among the built-in groups stops the core at start; a plugin's group
+ * that registers a taken key, or throws, is left out with an ERROR line naming its jar.
  */
 public interface CommandGroup {
     /** Registers this group's commands; called once for every table the core builds. */

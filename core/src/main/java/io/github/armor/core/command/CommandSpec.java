@@ -12,6 +12,7 @@ import java.util.List;
  *
  * @param key     the dispatch key, {@code "QUERY IND CLASS"}, {@code "DROP - -"}
  * @param aliases other keys answered the same way ({@code "ADD MIN CARDINALITY"})
+ * @param origin  where it comes from: {@code "core"}, or the file name of the plugin jar
  */
 public record CommandSpec(
         String key,
@@ -21,6 +22,7 @@ public record CommandSpec(
         List<String> optional,
         boolean variadic,
         String summary,
+        String origin,
         Handler handler) {
 
     @FunctionalInterface

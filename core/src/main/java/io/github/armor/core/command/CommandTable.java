@@ -2,24 +2,67 @@
 package io.github.armor.core.command;
 
 import io.github.armor.core.command.CommandSpec.Handler;
+import java.net.URISyntaxException;
+import java.net.URL;
+import java.nio.file.Path;
+import java.security.CodeSource;
 import java.util.ArrayList;
+import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
+import java.util.ServiceConfigurationError;
 import java.util.ServiceLoader;
 import java.util.TreeMap;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /** All commands the core answers, by dispatch key ({@code "QUERY IND CLASS"}, {@code "DROP - -"}). */
 public final class CommandTable {
+    /** The origin of the commands of the core's own jar. */
+    public static final String BUILT_IN = "core";
+
+    private static final Logger LOG = LoggerFactory.getLogger(CommandTable.class);
+    // A broken services file can make ServiceLoader fail on every step: give up after this many.
+    private static final int MAX_LOAD_ERRORS = 100;
+
     private final Map<String, CommandSpec> byKey = new TreeMap<>();
     private final Map<String, CommandSpec> commands = new LinkedHashMap<>();
+    private final String origin;
 
-    /** The table of every {@link CommandGroup} the class loader finds: the built-in ones, then plugins'. */
+    private CommandTable(String origin) {
+        this.origin = origin;
+    }
+
+    /**
+     * The table of every {@link CommandGroup} the class loader finds: the built-in ones, then
+     * plugins'. A plugin's group that cannot be loaded or registered, or that registers a key
+     * another group has, is left out whole (its jar named in an ERROR line); the core starts
+     * without it. Plugins' commands run under {@link PluginGuard}.
+     */
     public static CommandTable load(ClassLoader loader) {
-        CommandTable table = new CommandTable();
-        for (CommandGroup group : ServiceLoader.load(CommandGroup.class, loader)) {
-            group.register(table);
+        CommandTable table = new CommandTable(BUILT_IN);
+        Iterator<CommandGroup> groups = ServiceLoader.load(CommandGroup.class, loader).iterator();
+        int errors = 0;
+        while (errors < MAX_LOAD_ERRORS) {
+            CommandGroup group;
+            try {
+                if (!groups.hasNext()) {
+                    break;
+                }
+                group = groups.next();
+            } catch (ServiceConfigurationError e) {
+                errors++;
+                LOG.error("a plugin's command group could not be loaded and is left out: {}", e.getMessage());
+                continue;
+            }
+            if (sameSource(group.getClass(), CommandTable.class)) {
+                group.register(table);
+            } else {
+                table.addPlugin(group, jarOf(group.getClass()));
+            }
         }
         return table;
     }
@@ -27,6 +70,58 @@ public final class CommandTable {
     /** The table of the core's own jar (and its class path). */
     public static CommandTable standard() {
         return load(CommandTable.class.getClassLoader());
+    }
+
+    private void addPlugin(CommandGroup group, String jar) {
+        CommandTable staged = new CommandTable(jar);
+        try {
+            group.register(staged);
+        } catch (VirtualMachineError e) {
+            throw e;
+        } catch (RuntimeException | Error e) {
+            LOG.error("command group {} of plugin {} failed to register and is left out: {}",
+                    group.getClass().getName(), jar, e.toString());
+            return;
+        }
+        for (String key : staged.byKey.keySet()) {
+            CommandSpec taken = byKey.get(key);
+            if (taken != null) {
+                LOG.error("command group {} of plugin {} is left out: it registers {}, which {} already has",
+                        group.getClass().getName(), jar, key, taken.origin());
+                return;
+            }
+        }
+        byKey.putAll(staged.byKey);
+        commands.putAll(staged.commands);
+        LOG.info("plugin {}: command group {} adds {}", jar, group.getClass().getName(),
+                String.join(", ", staged.commands.keySet()));
+    }
+
+    /** Where a class was loaded from (a jar, a class directory), or null. */
+    private static URL location(Class<?> type) {
+        CodeSource source = type.getProtectionDomain().getCodeSource();
+        return source == null ? null : source.getLocation();
+    }
+
+    private static boolean sameSource(Class<?> one, Class<?> other) {
+        URL first = location(one);
+        URL second = location(other);
+        // Compared as text: URL.equals would resolve host names.
+        return first == null ? second == null
+                : second != null && first.toExternalForm().equals(second.toExternalForm());
+    }
+
+    /** The file name of the jar a plugin's class was loaded from. */
+    private static String jarOf(Class<?> type) {
+        URL location = location(type);
+        if (location == null) {
+            return type.getName();
+        }
+        try {
+            return Objects.toString(Path.of(location.toURI()).getFileName(), location.toString());
+        } catch (URISyntaxException | IllegalArgumentException e) {
+            return location.toString();
+        }
     }
 
     public Optional<CommandSpec> find(String key) {
@@ -130,7 +225,9 @@ public final class CommandTable {
             if (summary.isBlank()) {
                 throw new IllegalStateException("command " + key + " has no summary");
             }
-            CommandSpec spec = new CommandSpec(key, aliases, kind, required, optional, variadic, summary, handler);
+            boolean plugin = !origin.equals(BUILT_IN);
+            CommandSpec spec = new CommandSpec(key, aliases, kind, required, optional, variadic, summary, origin,
+                    plugin ? PluginGuard.guard(key, origin, handler) : handler);
             List<String> keys = new ArrayList<>(aliases);
             keys.add(0, key);
             for (String name : keys) {

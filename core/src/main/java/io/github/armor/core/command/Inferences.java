@@ -32,16 +32,17 @@ import org.semanticweb.owlapi.util.InferredSubClassAxiomGenerator;
 /**
  * Answers as the contract wants them: the union of what the ontology asserts and what the
  * reasoner infers. The asserted half matters with a buffered reasoner, which has not yet seen
- * the changes applied since the last REASON.
+ * the changes applied since the last REASON. Public for plugins: a plugin's command answers
+ * from the same knowledge as the built-in queries.
  */
-final class Inferences {
+public final class Inferences {
     private Inferences() {}
 
     /**
      * What the reasoner answers, or nothing when this reasoner cannot answer that kind of
      * question (ELK has no property-value queries): the asserted half still answers.
      */
-    static <T> Stream<T> inferred(Reference reference, Function<OWLReasoner, Stream<T>> question) {
+    public static <T> Stream<T> inferred(Reference reference, Function<OWLReasoner, Stream<T>> question) {
         OWLReasoner reasoner = reference.reasonerForQuery();
         try {
             return reference.guardReasoner(() -> question.apply(reasoner).toList()).stream();
@@ -57,15 +58,15 @@ final class Inferences {
      * Whether the ontology mentions the entity. One it does not mention has no facts, asserted or
      * inferred; reasoners asked about it anyway answer wrongly (JFact) or fail.
      */
-    static boolean known(Reference reference, OWLEntity entity) {
+    public static boolean known(Reference reference, OWLEntity entity) {
         return entity.isBuiltIn() || reference.ontology().containsEntityInSignature(entity, Imports.INCLUDED);
     }
 
-    static Stream<OWLOntology> closure(Reference reference) {
+    public static Stream<OWLOntology> closure(Reference reference) {
         return reference.ontology().importsClosure();
     }
 
-    static Set<OWLNamedIndividual> instances(Reference reference, OWLClassExpression owlClass, boolean direct) {
+    public static Set<OWLNamedIndividual> instances(Reference reference, OWLClassExpression owlClass, boolean direct) {
         if (!owlClass.isAnonymous() && !known(reference, owlClass.asOWLClass())) {
             return Set.of();
         }
@@ -86,7 +87,7 @@ final class Inferences {
     }
 
     @SafeVarargs
-    static <T> Set<T> union(Stream<? extends T>... parts) {
+    public static <T> Set<T> union(Stream<? extends T>... parts) {
         return Stream.of(parts).flatMap(s -> s).collect(Collectors.toCollection(LinkedHashSet::new));
     }
 

@@ -38,7 +38,7 @@ public final class ReasonerRegistry {
         thread.setDaemon(true);
         return thread;
     });
-    // Where factory class names are looked up: the core's class path, plus plugin_dir's jars once set.
+    // Where factory class names are looked up: the core's class path, plus the jars of plugin_dirs once set.
     private static volatile ClassLoader classLoader = ReasonerRegistry.class.getClassLoader();
 
     private ReasonerRegistry() {}
@@ -124,7 +124,7 @@ public final class ReasonerRegistry {
         } catch (ClassNotFoundException e) {
             throw new ArmorException(ExitCode.REASONER_FAILED, "unknown reasoner '" + canonicalName
                     + "': expected HERMIT, PELLET, JFACT, ELK or an OWLReasonerFactory class name (on the core's"
-                    + " class path or in a jar of plugin_dir)");
+                    + " class path or in a jar of plugin_dirs)");
         } catch (ReflectiveOperationException | LinkageError e) {
             throw new ArmorException(ExitCode.REASONER_FAILED,
                     "reasoner factory '" + canonicalName + "' could not be created: " + e, e);

@@ -11,6 +11,7 @@ import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.reference.ReasonerRegistry;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -18,7 +19,7 @@ import java.util.Map;
  * the references kept in the state directory, then prints one "ready" line on stdout once the
  * socket accepts connections, and exits when stdin closes, so the core never outlives the node
  * that started it. {@code java -jar armor-core.jar --catalogue [CONFIG_JSON]} prints the
- * catalogue (commands, exit codes, settings; with plugin_dir's commands) and exits.
+ * catalogue (commands, exit codes, settings; with the commands of plugin_dirs' jars) and exits.
  */
 public final class CoreMain {
     /** Exit status for a command line or configuration the core refuses. */
@@ -42,7 +43,8 @@ public final class CoreMain {
         try {
             settings = SettingsJson.parse(args.length == 2 ? JsonParser.parseString(args[1]).getAsJsonObject()
                     : new JsonObject());
-            ClassLoader plugins = Plugins.classLoader((String) settings.get(Setting.PLUGIN_DIR));
+            @SuppressWarnings("unchecked")
+            ClassLoader plugins = Plugins.classLoader((List<String>) settings.get(Setting.PLUGIN_DIRS));
             ReasonerRegistry.useClassLoader(plugins);
             commands = CommandTable.load(plugins);
         } catch (RuntimeException e) {

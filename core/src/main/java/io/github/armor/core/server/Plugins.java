@@ -8,38 +8,46 @@ import java.net.URL;
 import java.net.URLClassLoader;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
 
 /**
- * The class loader of the plugin directory: every jar in it, on top of the core's own class
- * path. {@code java -jar} ignores {@code -cp}, so this is how command groups and reasoner
- * factories from other jars reach the core.
+ * The class loader of the plugin directories: every jar in them, on top of the core's own
+ * class path. {@code java -jar} ignores {@code -cp}, so this is how command groups and
+ * reasoner factories from other jars reach the core.
  */
 final class Plugins {
     private Plugins() {}
 
-    /** The core's own class loader when {@code directory} is blank, else one over its jars. */
-    static ClassLoader classLoader(String directory) {
+    /**
+     * The core's own class loader when no directory is named, else one over their jars: the
+     * directories in the order given, the jars of each by name (a plugin's libraries may lie
+     * beside it).
+     *
+     * @throws IllegalArgumentException naming an entry that is not a directory
+     */
+    static ClassLoader classLoader(List<String> directories) {
         ClassLoader own = Plugins.class.getClassLoader();
-        if (directory == null || directory.isBlank()) {
-            return own;
-        }
-        Path dir = Path.of(directory);
-        if (!Files.isDirectory(dir)) {
-            throw new IllegalArgumentException("plugin_dir '" + directory + "' is not a directory");
-        }
-        try (Stream<Path> entries = Files.list(dir)) {
-            List<Path> jars = entries.filter(p -> p.getFileName().toString().endsWith(".jar")).sorted().toList();
-            URL[] urls = new URL[jars.size()];
-            for (int i = 0; i < urls.length; i++) {
-                urls[i] = jars.get(i).toUri().toURL();
+        List<URL> urls = new ArrayList<>();
+        for (String directory : directories) {
+            if (directory == null || directory.isBlank()) {
+                continue;
             }
-            return new URLClassLoader("armor-plugins", urls, own);
-        } catch (MalformedURLException e) {
-            throw new IllegalArgumentException("plugin_dir '" + directory + "': " + e.getMessage(), e);
-        } catch (IOException e) {
-            throw new UncheckedIOException("plugin_dir '" + directory + "' could not be listed", e);
+            Path dir = Path.of(directory.trim());
+            if (!Files.isDirectory(dir)) {
+                throw new IllegalArgumentException("plugin_dirs entry '" + directory + "' is not a directory");
+            }
+            try (Stream<Path> entries = Files.list(dir)) {
+                for (Path jar : entries.filter(p -> p.getFileName().toString().endsWith(".jar")).sorted().toList()) {
+                    urls.add(jar.toUri().toURL());
+                }
+            } catch (MalformedURLException e) {
+                throw new IllegalArgumentException("plugin_dirs entry '" + directory + "': " + e.getMessage(), e);
+            } catch (IOException e) {
+                throw new UncheckedIOException("plugin_dirs entry '" + directory + "' could not be listed", e);
+            }
         }
+        return urls.isEmpty() ? own : new URLClassLoader("armor-plugins", urls.toArray(URL[]::new), own);
     }
 }

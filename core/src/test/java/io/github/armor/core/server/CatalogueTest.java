@@ -113,7 +113,7 @@ class CatalogueTest {
                 Map.of(CommandGroup.class.getName(), "example.HelloCommands"),
                 CommandGroup.class, OWLReasonerFactory.class, org.semanticweb.HermiT.ReasonerFactory.class);
 
-        ClassLoader loader = Plugins.classLoader(plugins.toString());
+        ClassLoader loader = Plugins.classLoader(List.of(plugins.toString()));
         CommandTable table = CommandTable.load(loader);
         assertEquals(CommandTable.standard().catalogue().size() + 1, table.catalogue().size());
         assertEquals("greets", find(Catalogue.json(table), "commands", "key", "QUERY HELLO -").get("summary")
@@ -141,8 +141,32 @@ class CatalogueTest {
     }
 
     @Test
-    void aMissingPluginDirectoryIsRefused() {
-        assertThrows(IllegalArgumentException.class, () -> Plugins.classLoader(scratch.resolve("none").toString()));
+    void aMissingPluginDirectoryIsRefusedNamingIt() {
+        Path missing = scratch.resolve("none");
+        IllegalArgumentException refused = assertThrows(IllegalArgumentException.class,
+                () -> Plugins.classLoader(List.of(scratch.toString(), missing.toString())));
+        assertTrue(refused.getMessage().contains(missing.toString()), refused.getMessage());
+    }
+
+    @Test
+    void theJarsOfSeveralPluginDirectoriesAreLoadedAndBlankEntriesIgnored() throws Exception {
+        for (String name : List.of("one", "two")) {
+            String group = "example." + name + ".Commands";
+            PluginJars.build(scratch.resolve("build-" + name), scratch.resolve(name).resolve(name + ".jar"), Map.of(
+                    group, "package example." + name + ";\n"
+                            + "public final class Commands implements io.github.armor.core.command.CommandGroup {\n"
+                            + "    public void register(io.github.armor.core.command.CommandTable table) {\n"
+                            + "        table.command(\"QUERY " + name.toUpperCase() + "\").summary(\"" + name
+                            + "\").global(c -> c.ok());\n    }\n}\n"),
+                    Map.of(CommandGroup.class.getName(), group), CommandGroup.class);
+        }
+        CommandTable table = CommandTable.load(Plugins.classLoader(List.of(
+                scratch.resolve("one").toString(), " ", scratch.resolve("two").toString())));
+        assertEquals("one.jar", table.find("QUERY ONE -").orElseThrow().origin());
+        assertEquals("two.jar", table.find("QUERY TWO -").orElseThrow().origin());
+        JsonObject json = Catalogue.json(table);
+        assertEquals("two.jar", find(json, "commands", "key", "QUERY TWO -").get("origin").getAsString());
+        assertEquals("core", find(json, "commands", "key", "QUERY IND CLASS").get("origin").getAsString());
     }
 
     private static JsonObject find(JsonObject json, String array, String field, String value) {

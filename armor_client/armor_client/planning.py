@@ -1,0 +1,56 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""The planner bridge's commands (the PDDL plugin the node loads by default; docs/pddl.md).
+
+Mixed into every reference class (Reference, AsyncReference) like the contract's commands:
+each method builds a directive and says how to read the answer; ``_execute`` sends it.
+"""
+
+import json
+import os
+from typing import Any, Callable, Mapping, Sequence, Tuple, Union
+
+MappingArgument = Union[str, 'os.PathLike[str]', Mapping[str, Any]]
+
+
+def mapping_argument(mapping: MappingArgument) -> str:
+    """The mapping as the directive carries it: a path on the node's machine, or the text itself.
+
+    A dict is sent as JSON text (the plugin reads YAML and JSON); a string is a path inside the
+    node's allowed_dirs unless it holds a line break or starts with '{' (then it is the mapping).
+    """
+    if isinstance(mapping, Mapping):
+        return json.dumps(mapping)
+    return os.fspath(mapping)
+
+
+class PlannerBridge:
+    """PDDL problems generated from what a reference knows, asserted and inferred."""
+
+    def _execute(self, words: Tuple[str, str, str], args: Sequence[Any],
+                 parse: Callable[[Any], Any]) -> Any:
+        raise NotImplementedError
+
+    def pddl_problem(self, mapping: MappingArgument) -> str:
+        """A PDDL problem of this reference's state (QUERY PDDL PROBLEM).
+
+        Args:
+            mapping: a mapping file on the node's machine (inside its allowed_dirs), its YAML
+                or JSON text, or a dict: which classes become types and predicates, which
+                properties predicates and fluents, and the goal (docs/pddl.md).
+
+        Returns:
+            The problem's text; the same state gives the same bytes.
+        """
+        # One string answers; joined, an answer without it reads as no text rather than failing.
+        return self._execute(('QUERY', 'PDDL', 'PROBLEM'), [mapping_argument(mapping)],
+                             lambda response: ''.join(response.queried_objects))
+
+    def save_pddl_problem(self, mapping: MappingArgument, path: str) -> None:
+        """Write that PDDL problem to a file on the node's machine (SAVE PDDL PROBLEM).
+
+        Args:
+            mapping: as for pddl_problem.
+            path: where, inside the node's allowed_dirs.
+        """
+        return self._execute(('SAVE', 'PDDL', 'PROBLEM'), [mapping_argument(mapping), path],
+                             lambda response: None)
