@@ -161,9 +161,15 @@ public final class CommandContext {
         return Literals.literal(factory(), reference.names(), arg(typeIndex), arg(valueIndex));
     }
 
-    /** A boolean flag argument: exactly true or false, any case. */
+    /**
+     * A boolean flag argument: true or false, any case; empty is false, as ROS 1 ARMOR read it
+     * (Boolean.valueOf), so old clients that leave a buffering flag empty keep working.
+     */
     public boolean flag(int index) {
         String value = arg(index).trim();
+        if (value.isEmpty()) {
+            return false;
+        }
         if (value.equalsIgnoreCase("true")) {
             return true;
         }

@@ -10,8 +10,11 @@ import java.util.List;
  * One COMMAND PRIMARY SECONDARY combination: its kind, the arguments it takes (named, for error
  * messages and the catalogue), what it does in one line, and the code that answers it.
  *
- * @param key     the dispatch key, {@code "QUERY IND CLASS"}, {@code "DROP - -"}
- * @param aliases other keys answered the same way ({@code "ADD MIN CARDINALITY"})
+ * @param key                 the dispatch key, {@code "QUERY IND CLASS"}, {@code "DROP - -"}
+ * @param aliases             other keys answered the same way ({@code "ADD MIN CARDINALITY"})
+ * @param emptySurplusIgnored empty strings after the last argument are accepted and ignored: ROS 1
+ *                            ARMOR read only the arguments it named, so old clients send
+ *                            {@code ['']} to REASON or MOUNT as a dummy
  */
 public record CommandSpec(
         String key,
@@ -20,6 +23,7 @@ public record CommandSpec(
         List<String> required,
         List<String> optional,
         boolean variadic,
+        boolean emptySurplusIgnored,
         String summary,
         Handler handler) {
 
@@ -42,10 +46,17 @@ public record CommandSpec(
         return kind.mountChecked();
     }
 
-    /** Checks the argument count, naming what was expected. */
-    public void checkArity(int given) {
+    /**
+     * Checks the argument count, naming what was expected. Surplus arguments are refused unless
+     * they are all empty strings and the command ignores those ({@link #emptySurplusIgnored}).
+     */
+    public void checkArity(List<String> args) {
+        int given = args.size();
         int min = required.size();
         int max = variadic ? Integer.MAX_VALUE : min + optional.size();
+        if (given > max && emptySurplusIgnored && args.subList(max, given).stream().allMatch(String::isEmpty)) {
+            return;
+        }
         if (given < min || given > max) {
             String expected = variadic ? "at least " + min
                     : optional.isEmpty() ? String.valueOf(min) : min + " to " + max;

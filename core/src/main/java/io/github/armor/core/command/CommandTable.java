@@ -58,6 +58,7 @@ public final class CommandTable {
         private List<String> required = List.of();
         private List<String> optional = List.of();
         private boolean variadic;
+        private boolean emptySurplusIgnored;
         private String summary = "";
 
         private Builder(String key) {
@@ -82,6 +83,16 @@ public final class CommandTable {
         /** The last required argument may be repeated. */
         public Builder variadic() {
             variadic = true;
+            return this;
+        }
+
+        /**
+         * A command of ROS 1 ARMOR, which read only the arguments it named: empty strings after
+         * them (old clients' dummies, {@code REASON ['']}) are accepted and ignored here too;
+         * other surplus arguments stay an error (207).
+         */
+        public Builder emptySurplusIgnored() {
+            emptySurplusIgnored = true;
             return this;
         }
 
@@ -130,7 +141,8 @@ public final class CommandTable {
             if (summary.isBlank()) {
                 throw new IllegalStateException("command " + key + " has no summary");
             }
-            CommandSpec spec = new CommandSpec(key, aliases, kind, required, optional, variadic, summary, handler);
+            CommandSpec spec = new CommandSpec(key, aliases, kind, required, optional, variadic,
+                    emptySurplusIgnored, summary, handler);
             List<String> keys = new ArrayList<>(aliases);
             keys.add(0, key);
             for (String name : keys) {
