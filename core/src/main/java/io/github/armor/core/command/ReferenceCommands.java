@@ -122,6 +122,10 @@ public final class ReferenceCommands implements CommandGroup {
         if (mount) {
             takeMount(reference, client);
         }
+        String coverage = reference.coverage().loadReport();
+        if (!coverage.isEmpty()) {
+            warnings.append(warnings.isEmpty() ? "" : "; ").append(coverage);
+        }
         return Response.ok(reference.isConsistent(), List.of()).withDescription(warnings.toString());
     }
 

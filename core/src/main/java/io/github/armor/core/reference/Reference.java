@@ -54,6 +54,7 @@ public final class Reference {
     private final boolean bufferedManipulation;
     private final boolean bufferedReasoner;
     private final long reasonerTimeoutMs;
+    private final ReasonerCoverage coverage;
 
     private final ReentrantLock lock = new ReentrantLock(true);
 
@@ -92,10 +93,16 @@ public final class Reference {
         this.bufferedManipulation = settings.bufferedManipulation();
         this.bufferedReasoner = settings.bufferedReasoner();
         this.reasonerTimeoutMs = reasonerTimeoutMs;
-        ReasonerCalls.withBudget(reasonerTimeoutMs, () -> {
-            refreshConsistency();
-            return null;
-        });
+        this.coverage = ReasonerCoverage.watch(reasonerName, ontology);
+        try {
+            ReasonerCalls.withBudget(reasonerTimeoutMs, () -> {
+                refreshConsistency();
+                return null;
+            });
+        } catch (RuntimeException e) {
+            coverage.close();
+            throw e;
+        }
     }
 
     /**
@@ -170,6 +177,11 @@ public final class Reference {
 
     public String reasonerName() {
         return reasonerName;
+    }
+
+    /** What of the ontology the reasoner does not use (its answers may then be incomplete). */
+    public ReasonerCoverage coverage() {
+        return coverage;
     }
 
     public boolean isConsistent() {
@@ -257,6 +269,7 @@ public final class Reference {
 
     /** Releases the reasoner; the reference must not be used afterwards. */
     public void dispose() {
+        coverage.close();
         if (reasoner != null) {
             reasoner.dispose();
         }
