@@ -45,7 +45,8 @@ public final class Manipulations implements CommandGroup {
                 .summary("declare an individual").manipulation(c -> c.change(adds(c, List.of(
                 c.factory().getOWLDeclarationAxiom(c.individual(0)),
                 c.factory().getOWLClassAssertionAxiom(c.factory().getOWLThing(), c.individual(0))))));
-        table.command("ADD CLASS").args("class").emptySurplusIgnored().summary("declare a class").manipulation(c -> c.change(adds(c, List.of(
+        table.command("ADD CLASS").args("class").emptySurplusIgnored()
+                .summary("declare a class").manipulation(c -> c.change(adds(c, List.of(
                 c.factory().getOWLDeclarationAxiom(c.owlClass(0)),
                 c.factory().getOWLSubClassOfAxiom(c.owlClass(0), c.factory().getOWLThing())))));
         table.command("ADD CARDINALITY MIN").alias("ADD MIN CARDINALITY").emptySurplusIgnored()
@@ -83,7 +84,8 @@ public final class Manipulations implements CommandGroup {
                 .summary("remove every axiom that mentions the class")
                 .manipulation(c -> c.change(removeEntity(c.reference(),
                 c.owlClass(0))));
-        table.command("REPLACE DATAPROP IND").args("prop", "ind", "type", "new value", "old value").emptySurplusIgnored()
+        table.command("REPLACE DATAPROP IND").args("prop", "ind", "type", "new value", "old value")
+                .emptySurplusIgnored()
                 .summary("replace one data property value by another")
                 .manipulation(Manipulations::replaceDataValue);
         table.command("ADD DATAPROP IND").args("prop", "ind", "type", "value").emptySurplusIgnored()

@@ -46,7 +46,8 @@ public final class ReferenceCommands implements CommandGroup {
         });
         table.command("MOUNT").emptySurplusIgnored().summary("become the only client allowed to change it")
                 .mounting(ReferenceCommands::mount);
-        table.command("UNMOUNT").emptySurplusIgnored().summary("release the mount").mounting(ReferenceCommands::unmount);
+        table.command("UNMOUNT").emptySurplusIgnored().summary("release the mount")
+                .mounting(ReferenceCommands::unmount);
         table.command("GET ALL REFS").emptySurplusIgnored()
                 .summary("names of the loaded references").global(c -> Response.ok(true, c.references().names()));
         // One line per LOAD in flight: reference, phase, bytes read, bytes in all, elapsed ms.
@@ -68,7 +69,8 @@ public final class ReferenceCommands implements CommandGroup {
                 return Response.ok(true, List.of());
             });
         }
-        table.command("LOG FILE ON").args("path").emptySurplusIgnored().summary("log directives to a file").global(c -> {
+        table.command("LOG FILE ON").args("path").emptySurplusIgnored()
+                .summary("log directives to a file").global(c -> {
             c.log().file(files(c).allowedPath(c.arg(0)));
             return Response.ok(true, List.of());
         });
@@ -80,7 +82,8 @@ public final class ReferenceCommands implements CommandGroup {
             c.reference().applyPending();
             return c.ok();
         });
-        table.command("REASON").emptySurplusIgnored().summary("apply the buffer and update the reasoner").manipulation(c -> {
+        table.command("REASON").emptySurplusIgnored()
+                .summary("apply the buffer and update the reasoner").manipulation(c -> {
             // Replayed, a REASON only applies: the restored reasoner is brought up to date once, at the end.
             if (c.replaying()) {
                 c.reference().applyPending();

@@ -386,7 +386,9 @@ public final class Reference {
         boolean abandoned = cause instanceof ReasonerCalls.Overran overran && overran.abandoned();
         if (!(cause instanceof ReasonerCalls.Overran overran) || overran.started()) {
             // Interrupted, it may answer wrongly or not at all from now on: the next use makes another.
-            ReasonerCalls.disposeInBackground(reasoner);
+            if (!abandoned) {
+                ReasonerCalls.disposeInBackground(reasoner); // an abandoned one is disposed by its call
+            }
             reasoner = null;
         }
         return new ArmorException(ExitCode.TIMEOUT, reasonerName + " exceeded the reasoner time limit of "
