@@ -228,7 +228,7 @@ public final class ArmorCore implements AutoCloseable {
                     + "' (read as " + directive.key() + "); closest: " + String.join("; ",
                     CommandSuggestions.closest(commands.catalogue(), directive.key(), directive.args().size())));
         }
-        spec.checkArity(directive.args().size());
+        spec.checkArity(directive.args());
         return switch (spec.target()) {
             case NONE -> spec.handler().run(context(directive, null));
             case NEW -> create(spec, directive, list);

@@ -22,7 +22,7 @@ class ConcurrencyTest {
 
     @AfterEach
     void unblock() {
-        BlockingReasonerFactory.BLOCK_MS.set(0);
+        BlockingReasonerFactory.reset();
     }
 
     private static ArmorCore core(long lockWaitMs, long reasonerTimeoutMs, long mountLeaseS) {

@@ -68,18 +68,29 @@ public final class CommandContext {
     }
 
     /**
-     * The directive's answer: the deferred evaluation's, if the handler left one. A success that
-     * named entities the reference did not know says so in its description (a typo creates an
-     * entity, as in ARMOR; the client can warn).
+     * The directive's answer: the deferred evaluation's, if the handler left one. A success says
+     * in its description what the client should know of it: that it named entities the
+     * reference did not know (a typo creates an entity, as in ARMOR; the client can warn), and,
+     * for a query, that the reasoner does not use some axioms, so the answer may be incomplete.
      */
     public Response finishAfterRelease(Response underLock) {
         Supplier<Response> evaluation = afterRelease;
         afterRelease = null;
         Response response = evaluation == null ? underLock : evaluation.get();
-        if (!response.success() || unknownNames.isEmpty()) {
+        if (!response.success()) {
             return response;
         }
-        String note = "new to the reference: " + String.join(", ", unknownNames);
+        if (!unknownNames.isEmpty()) {
+            response = withNote(response, "new to the reference: " + String.join(", ", unknownNames));
+        }
+        String unused = reference == null ? "" : reference.coverage().summary();
+        if (!unused.isEmpty() && directive.command().equalsIgnoreCase("QUERY")) {
+            response = withNote(response, "may be incomplete: " + unused);
+        }
+        return response;
+    }
+
+    private static Response withNote(Response response, String note) {
         return response.withDescription(response.errorDescription().isEmpty() ? note
                 : response.errorDescription() + "; " + note);
     }
@@ -161,9 +172,15 @@ public final class CommandContext {
         return Literals.literal(factory(), reference.names(), arg(typeIndex), arg(valueIndex));
     }
 
-    /** A boolean flag argument: exactly true or false, any case. */
+    /**
+     * A boolean flag argument: true or false, any case; empty is false, as ROS 1 ARMOR read it
+     * (Boolean.valueOf), so old clients that leave a buffering flag empty keep working.
+     */
     public boolean flag(int index) {
         String value = arg(index).trim();
+        if (value.isEmpty()) {
+            return false;
+        }
         if (value.equalsIgnoreCase("true")) {
             return true;
         }

@@ -10,9 +10,12 @@ import java.util.List;
  * One COMMAND PRIMARY SECONDARY combination: its kind, the arguments it takes (named, for error
  * messages and the catalogue), what it does in one line, and the code that answers it.
  *
- * @param key     the dispatch key, {@code "QUERY IND CLASS"}, {@code "DROP - -"}
- * @param aliases other keys answered the same way ({@code "ADD MIN CARDINALITY"})
- * @param origin  where it comes from: {@code "core"}, or the file name of the plugin jar
+ * @param key                 the dispatch key, {@code "QUERY IND CLASS"}, {@code "DROP - -"}
+ * @param aliases             other keys answered the same way ({@code "ADD MIN CARDINALITY"})
+ * @param emptySurplusIgnored empty strings after the last argument are accepted and ignored: ROS 1
+ *                            ARMOR read only the arguments it named, so old clients send
+ *                            {@code ['']} to REASON or MOUNT as a dummy
+ * @param origin              where it comes from: {@code "core"}, or the file name of the plugin jar
  */
 public record CommandSpec(
         String key,
@@ -21,6 +24,7 @@ public record CommandSpec(
         List<String> required,
         List<String> optional,
         boolean variadic,
+        boolean emptySurplusIgnored,
         String summary,
         String origin,
         Handler handler) {
@@ -44,10 +48,17 @@ public record CommandSpec(
         return kind.mountChecked();
     }
 
-    /** Checks the argument count, naming what was expected. */
-    public void checkArity(int given) {
+    /**
+     * Checks the argument count, naming what was expected. Surplus arguments are refused unless
+     * they are all empty strings and the command ignores those ({@link #emptySurplusIgnored}).
+     */
+    public void checkArity(List<String> args) {
+        int given = args.size();
         int min = required.size();
         int max = variadic ? Integer.MAX_VALUE : min + optional.size();
+        if (given > max && emptySurplusIgnored && args.subList(max, given).stream().allMatch(String::isEmpty)) {
+            return;
+        }
         if (given < min || given > max) {
             String expected = variadic ? "at least " + min
                     : optional.isEmpty() ? String.valueOf(min) : min + " to " + max;

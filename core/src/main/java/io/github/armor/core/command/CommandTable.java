@@ -153,6 +153,7 @@ public final class CommandTable {
         private List<String> required = List.of();
         private List<String> optional = List.of();
         private boolean variadic;
+        private boolean emptySurplusIgnored;
         private String summary = "";
 
         private Builder(String key) {
@@ -177,6 +178,16 @@ public final class CommandTable {
         /** The last required argument may be repeated. */
         public Builder variadic() {
             variadic = true;
+            return this;
+        }
+
+        /**
+         * A command of ROS 1 ARMOR, which read only the arguments it named: empty strings after
+         * them (old clients' dummies, {@code REASON ['']}) are accepted and ignored here too;
+         * other surplus arguments stay an error (207).
+         */
+        public Builder emptySurplusIgnored() {
+            emptySurplusIgnored = true;
             return this;
         }
 
@@ -226,7 +237,8 @@ public final class CommandTable {
                 throw new IllegalStateException("command " + key + " has no summary");
             }
             boolean plugin = !origin.equals(BUILT_IN);
-            CommandSpec spec = new CommandSpec(key, aliases, kind, required, optional, variadic, summary, origin,
+            CommandSpec spec = new CommandSpec(key, aliases, kind, required, optional, variadic,
+                    emptySurplusIgnored, summary, origin,
                     plugin ? PluginGuard.guard(key, origin, handler) : handler);
             List<String> keys = new ArrayList<>(aliases);
             keys.add(0, key);

@@ -76,6 +76,13 @@ public final class Inferences {
         return union(asserted, inferred(reference, r -> r.getInstances(owlClass, direct).entities()));
     }
 
+    /**
+     * The named classes entailed to be subclasses of {@code owlClass}, never the class itself. An
+     * unsatisfiable class is a subclass of every class: reasoners list the unsatisfiable ones
+     * under a satisfiable class, but under owl:Nothing or another unsatisfiable class only JFact
+     * does, so all of them are added here for every reasoner (a direct query keeps the
+     * reasoner's answer: the unsatisfiable classes are direct subclasses of the leaves only).
+     */
     static Set<OWLClass> subClasses(Reference reference, OWLClassExpression owlClass, boolean direct) {
         if (!owlClass.isAnonymous() && !known(reference, owlClass.asOWLClass())) {
             return Set.of();
@@ -83,7 +90,13 @@ public final class Inferences {
         Stream<OWLClass> asserted = owlClass.isAnonymous() ? Stream.empty()
                 : EntitySearcher.getSubClasses(owlClass.asOWLClass(), closure(reference))
                 .filter(c -> !c.isAnonymous()).map(OWLClassExpression::asOWLClass);
-        return union(asserted, inferred(reference, r -> r.getSubClasses(owlClass, direct).entities()));
+        Set<OWLClass> subclasses = union(asserted, inferred(reference, r -> direct
+                ? r.getSubClasses(owlClass, true).entities()
+                : Stream.concat(r.getSubClasses(owlClass, false).entities(), r.getUnsatisfiableClasses().entities())));
+        if (!owlClass.isAnonymous()) {
+            subclasses.remove(owlClass.asOWLClass());
+        }
+        return subclasses;
     }
 
     @SafeVarargs

@@ -115,9 +115,13 @@ public final class Literals {
         OWLDatatype datatype = datatype(factory, names, type);
         if (datatype.isBuiltIn()) {
             OWL2Datatype builtIn = datatype.getBuiltInDatatype();
-            if (builtIn == OWL2Datatype.XSD_BOOLEAN && !value.equals("true") && !value.equals("false")) {
-                throw new ArmorException(ExitCode.BAD_DATA_TYPE,
-                        "'" + value + "' is not a boolean: write true or false");
+            if (builtIn == OWL2Datatype.XSD_BOOLEAN) {
+                // Python clients write str(True): "True" is the same word, stored as xsd:boolean spells it.
+                if (!value.equalsIgnoreCase("true") && !value.equalsIgnoreCase("false")) {
+                    throw new ArmorException(ExitCode.BAD_DATA_TYPE,
+                            "'" + value + "' is not a boolean: write true or false");
+                }
+                return factory.getOWLLiteral(value.toLowerCase(Locale.ROOT), datatype);
             }
             if (!builtIn.isInLexicalSpace(value)) {
                 throw new ArmorException(ExitCode.BAD_DATA_TYPE,

@@ -41,14 +41,15 @@ public final class Manipulations implements CommandGroup {
     }
 
     private static void registerArmorCommands(CommandTable table) {
-        table.command("ADD IND").args("ind")
+        table.command("ADD IND").args("ind").emptySurplusIgnored()
                 .summary("declare an individual").manipulation(c -> c.change(adds(c, List.of(
                 c.factory().getOWLDeclarationAxiom(c.individual(0)),
                 c.factory().getOWLClassAssertionAxiom(c.factory().getOWLThing(), c.individual(0))))));
-        table.command("ADD CLASS").args("class").summary("declare a class").manipulation(c -> c.change(adds(c, List.of(
+        table.command("ADD CLASS").args("class").emptySurplusIgnored()
+                .summary("declare a class").manipulation(c -> c.change(adds(c, List.of(
                 c.factory().getOWLDeclarationAxiom(c.owlClass(0)),
                 c.factory().getOWLSubClassOfAxiom(c.owlClass(0), c.factory().getOWLThing())))));
-        table.command("ADD CARDINALITY MIN").alias("ADD MIN CARDINALITY")
+        table.command("ADD CARDINALITY MIN").alias("ADD MIN CARDINALITY").emptySurplusIgnored()
                 .args("class", "object prop", "n", "value class")
                 .summary("class SubClassOf prop min n value class")
                 .manipulation(c -> c.change(adds(c, List.of(c.factory().getOWLSubClassOfAxiom(c.owlClass(0),
@@ -60,42 +61,43 @@ public final class Manipulations implements CommandGroup {
         table.command("DISJOINT CLASS").args("class", "class").variadic()
                 .summary("assert that the classes are disjoint").manipulation(c -> c.change(adds(c, List.of(
                 c.factory().getOWLDisjointClassesAxiom(all(c, CommandContext::owlClass))))));
-        table.command("DISJOINT IND CLASS").args("class")
+        table.command("DISJOINT IND CLASS").args("class").emptySurplusIgnored()
                 .summary("make all instances of the class different from each other").manipulation(c -> {
             Set<OWLNamedIndividual> members = Inferences.instances(c.reference(), c.owlClass(0), false);
             return c.change(members.size() < 2 ? List.of()
                     : adds(c, List.of(c.factory().getOWLDifferentIndividualsAxiom(members))));
         });
-        table.command("DISJOINT CLASS CLASS").args("class")
+        table.command("DISJOINT CLASS CLASS").args("class").emptySurplusIgnored()
                 .summary("make the direct subclasses of the class disjoint").manipulation(c -> {
             Set<OWLClass> children = Inferences.subClasses(c.reference(), c.owlClass(0), true);
             return c.change(children.size() < 2 ? List.of()
                     : adds(c, List.of(c.factory().getOWLDisjointClassesAxiom(children))));
         });
-        table.command("MAKE EQUIVALENT CLASS").args("class")
+        table.command("MAKE EQUIVALENT CLASS").args("class").emptySurplusIgnored()
                         .summary("turn its SubClassOf axioms into one EquivalentClasses")
                         .manipulation(c -> c.change(makeEquivalentChanges(c)));
-        table.command("REMOVE IND").args("ind")
+        table.command("REMOVE IND").args("ind").emptySurplusIgnored()
                 .summary("remove every axiom that mentions the individual")
                 .manipulation(c -> c.change(removeEntity(c.reference(),
                 c.individual(0))));
-        table.command("REMOVE CLASS").args("class")
+        table.command("REMOVE CLASS").args("class").emptySurplusIgnored()
                 .summary("remove every axiom that mentions the class")
                 .manipulation(c -> c.change(removeEntity(c.reference(),
                 c.owlClass(0))));
         table.command("REPLACE DATAPROP IND").args("prop", "ind", "type", "new value", "old value")
+                .emptySurplusIgnored()
                 .summary("replace one data property value by another")
                 .manipulation(Manipulations::replaceDataValue);
-        table.command("ADD DATAPROP IND").args("prop", "ind", "type", "value")
+        table.command("ADD DATAPROP IND").args("prop", "ind", "type", "value").emptySurplusIgnored()
                 .summary("give the individual a data property value").manipulation(c -> c.change(adds(c,
                 List.of(c.factory().getOWLDataPropertyAssertionAxiom(c.dataProperty(0), c.individual(1),
                         c.literal(2, 3))))));
-        table.command("REMOVE DATAPROP IND").args("prop", "ind", "type", "value")
+        table.command("REMOVE DATAPROP IND").args("prop", "ind", "type", "value").emptySurplusIgnored()
                 .summary("remove that data property value").manipulation(c -> c.change(
                 removes(c, List.of(c.factory().getOWLDataPropertyAssertionAxiom(c.dataProperty(0), c.individual(1),
                         Literals.stored(c.reference().ontology(), c.dataProperty(0), c.individual(1),
                                 c.literal(2, 3)))))));
-        table.command("REPLACE OBJECTPROP IND").args("prop", "ind", "new value", "old value")
+        table.command("REPLACE OBJECTPROP IND").args("prop", "ind", "new value", "old value").emptySurplusIgnored()
                 .summary("replace one related individual by another")
                 .manipulation(c -> {
                     OWLDataFactory f = c.factory();
@@ -107,6 +109,9 @@ public final class Manipulations implements CommandGroup {
                     return c.change(changes);
                 });
     }
+
+    // The pairs ROS 1 ARMOR had (both ADD and REMOVE): they ignore empty surplus arguments as it did.
+    private static final Set<String> ARMOR_PAIRS = Set.of("IND CLASS", "CLASS CLASS", "OBJECTPROP IND");
 
     /** Commands that exist as ADD X and REMOVE X over the same axioms. */
     private static void registerPairs(CommandTable table) {
@@ -173,7 +178,7 @@ public final class Manipulations implements CommandGroup {
         List<String> words = List.of("IND", "CLASS", "DATAPROP", "OBJECTPROP");
         for (int i = 0; i < kinds.size(); i++) {
             EntityType<?> kind = kinds.get(i);
-            table.command("RENAME " + words.get(i)).args("old name", "new name")
+            table.command("RENAME " + words.get(i)).args("old name", "new name").emptySurplusIgnored()
                     .summary("rename " + NAMES.get(i) + " everywhere").manipulation(c -> {
                 Reference reference = c.reference();
                 IRI from = reference.names().iri(kind, c.arg(0));
@@ -192,6 +197,10 @@ public final class Manipulations implements CommandGroup {
         if (variadic) {
             add.variadic();
             remove.variadic();
+        }
+        if (ARMOR_PAIRS.contains(words)) {
+            add.emptySurplusIgnored();
+            remove.emptySurplusIgnored();
         }
         add.manipulation(c -> c.change(adds(c, axioms.apply(c))));
         remove.manipulation(c -> c.change(removes(c, axioms.apply(c))));

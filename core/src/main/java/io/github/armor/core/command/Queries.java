@@ -37,17 +37,17 @@ public final class Queries implements CommandGroup {
     }
 
     private static void registerIndividualQueries(CommandTable table) {
-        table.command("QUERY IND").args("ind")
+        table.command("QUERY IND").args("ind").emptySurplusIgnored()
                 .summary("the classes of the individual").query(c -> c.ok(c.render().entities(types(c.reference(),
                 c.individual(0), false).stream())));
-        table.command("QUERY IND CLASS").args("class")
+        table.command("QUERY IND CLASS").args("class").emptySurplusIgnored()
                 .summary("the instances of the class").query(c -> c.ok(c.render().entities(
                 Inferences.instances(c.reference(), c.owlClass(0), false).stream())));
         table.command("QUERY IND DL").args("class expression")
                 .summary("the instances of a Manchester class expression").query(c -> c.ok(c.render().entities(
                 Inferences.instances(c.reference(), Syntax.classExpression(c.reference(), c.arg(0)), false)
                         .stream())));
-        table.command("QUERY CLASS IND").args("ind").optional("most specific only")
+        table.command("QUERY CLASS IND").args("ind").optional("most specific only").emptySurplusIgnored()
                 .summary("the classes of the individual, optionally the most specific only").query(c -> {
             boolean direct = c.hasArg(1) && c.flag(1);
             return c.ok(c.render().entities(types(c.reference(), c.individual(0), direct).stream()));
@@ -61,7 +61,7 @@ public final class Queries implements CommandGroup {
             same.remove(individual);
             return c.ok(c.render().entities(same.stream()));
         });
-        table.command("QUERY IND DATAPROP").args("ind")
+        table.command("QUERY IND DATAPROP").args("ind").emptySurplusIgnored()
                 .summary("the data properties that have values for it").query(c -> {
             Reference reference = c.reference();
             OWLNamedIndividual individual = c.individual(0);
@@ -69,7 +69,7 @@ public final class Queries implements CommandGroup {
                     .filter(p -> !dataValues(reference, p, individual).isEmpty());
             return c.ok(c.render().entities(inferred));
         });
-        table.command("QUERY IND OBJECTPROP").args("ind")
+        table.command("QUERY IND OBJECTPROP").args("ind").emptySurplusIgnored()
                 .summary("the object properties that have values for it").query(c -> {
             Reference reference = c.reference();
             OWLNamedIndividual individual = c.individual(0);
@@ -80,7 +80,7 @@ public final class Queries implements CommandGroup {
     }
 
     private static void registerClassQueries(CommandTable table) {
-        table.command("QUERY CLASS CLASS").args("class")
+        table.command("QUERY CLASS CLASS").args("class").emptySurplusIgnored()
                 .summary("subclasses, all levels").query(c -> c.ok(c.render().entities(
                 Inferences.subClasses(c.reference(), c.owlClass(0), false).stream())));
         table.command("QUERY CLASS DL").args("class expression")
@@ -93,7 +93,7 @@ public final class Queries implements CommandGroup {
                 (r, owlClass) -> r.getEquivalentClasses(owlClass).entities());
         classRelation(table, "QUERY CLASS DISJOINT", "disjoint classes", EntitySearcher::getDisjointClasses,
                 (r, owlClass) -> r.getDisjointClasses(owlClass).entities());
-        table.command("QUERY CLASS RESTRICTIONS").args("class")
+        table.command("QUERY CLASS RESTRICTIONS").args("class").emptySurplusIgnored()
                 .summary("its restrictions, Manchester syntax").query(c -> {
             OWLClass owlClass = c.owlClass(0);
             Stream<OWLClassExpression> definitions = Stream.concat(
@@ -123,10 +123,10 @@ public final class Queries implements CommandGroup {
     }
 
     private static void registerPropertyQueries(CommandTable table) {
-        table.command("QUERY OBJECTPROP IND").args("prop", "ind")
+        table.command("QUERY OBJECTPROP IND").args("prop", "ind").emptySurplusIgnored()
                 .summary("the individuals it is related to by the property").query(c -> c.ok(c.render().entities(
                 objectValues(c.reference(), c.objectProperty(0), c.individual(1)).stream())));
-        table.command("QUERY DATAPROP IND").args("prop", "ind")
+        table.command("QUERY DATAPROP IND").args("prop", "ind").emptySurplusIgnored()
                 .summary("its values of the property").query(c -> c.ok(Rendering.literals(
                 dataValues(c.reference(), c.dataProperty(0), c.individual(1)))));
         table.command("QUERY OBJECTPROP OBJECTPROP").args("prop")

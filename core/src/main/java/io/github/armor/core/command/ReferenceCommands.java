@@ -20,11 +20,13 @@ public final class ReferenceCommands implements CommandGroup {
             boolean mount = mode.equals("MOUNTED");
             table.command("LOAD FILE " + mode)
                     .args("path", "ontology IRI", "buffered manipulation", "reasoner", "buffered reasoner")
+                    .emptySurplusIgnored()
                     .summary(mount ? "load a file and mount the caller on it"
                             : "create the reference from a local ontology file")
                     .creating(c -> load(c, 0, mount, c.arg(0), files(c)::loadFile));
             table.command("LOAD WEB " + mode)
                     .args("URL", "ontology IRI", "buffered manipulation", "reasoner", "buffered reasoner")
+                    .emptySurplusIgnored()
                     .summary(mount ? "load from a URL and mount the caller on it"
                             : "create the reference from a URL (web_loading:=true only)")
                     .creating(c -> load(c, 0, mount, c.arg(0), files(c)::loadWeb));
@@ -34,25 +36,26 @@ public final class ReferenceCommands implements CommandGroup {
                 .summary("create the reference as an empty ontology")
                 .creating(c -> load(c, -1, false, null,
                         ignored -> new OntologyFiles.Loaded(files(c).create(c.arg(0)), "")));
-        table.command("SAVE").optional("path", "format")
+        table.command("SAVE").optional("path", "format").emptySurplusIgnored()
                 .summary("write the ontology to a file").onReference(c -> save(c, false));
-        table.command("SAVE INFERENCE").optional("path", "format")
+        table.command("SAVE INFERENCE").optional("path", "format").emptySurplusIgnored()
                 .summary("write the ontology and its inferences to a file").onReference(c -> save(c, true));
-        table.command("DROP").summary("unload the reference").dropping(c -> {
+        table.command("DROP").emptySurplusIgnored().summary("unload the reference").dropping(c -> {
             c.references().remove(c.reference());
             return Response.ok(true, List.of());
         });
-        table.command("MOUNT").summary("become the only client allowed to change it")
+        table.command("MOUNT").emptySurplusIgnored().summary("become the only client allowed to change it")
                 .mounting(ReferenceCommands::mount);
-        table.command("UNMOUNT").summary("release the mount").mounting(ReferenceCommands::unmount);
-        table.command("GET ALL REFS")
+        table.command("UNMOUNT").emptySurplusIgnored().summary("release the mount")
+                .mounting(ReferenceCommands::unmount);
+        table.command("GET ALL REFS").emptySurplusIgnored()
                 .summary("names of the loaded references").global(c -> Response.ok(true, c.references().names()));
         // One line per LOAD in flight: reference, phase, bytes read, bytes in all, elapsed ms.
         table.command("GET LOAD PROGRESS").summary("the LOADs in flight, one line each")
                 .global(c -> Response.ok(true, LoadProgress.running()));
         table.command("GET CATALOGUE").summary("the catalogue: commands (plugins' too), exit codes, settings; JSON")
                 .global(c -> Response.ok(true, List.of(Catalogue.json(c.commands()).toString())));
-        table.command("GET REF CLIENT").optional("reference name")
+        table.command("GET REF CLIENT").optional("reference name").emptySurplusIgnored()
                 .summary("the client that holds the mount, if any").global(c -> {
             String name = c.hasArg(0) ? c.arg(0) : c.directive().referenceName();
             String holder = c.references().get(name).mountedBy();
@@ -60,25 +63,27 @@ public final class ReferenceCommands implements CommandGroup {
         });
         for (String state : List.of("ON", "OFF")) {
             boolean on = state.equals("ON");
-            table.command("LOG SCREEN " + state)
+            table.command("LOG SCREEN " + state).emptySurplusIgnored()
                     .summary(on ? "log directives on the node's screen" : "stop logging to the screen").global(c -> {
                 c.log().screen(on);
                 return Response.ok(true, List.of());
             });
         }
-        table.command("LOG FILE ON").args("path").summary("log directives to a file").global(c -> {
+        table.command("LOG FILE ON").args("path").emptySurplusIgnored()
+                .summary("log directives to a file").global(c -> {
             c.log().file(files(c).allowedPath(c.arg(0)));
             return Response.ok(true, List.of());
         });
-        table.command("LOG FILE OFF").summary("stop logging to a file").global(c -> {
+        table.command("LOG FILE OFF").emptySurplusIgnored().summary("stop logging to a file").global(c -> {
             c.log().closeFile();
             return Response.ok(true, List.of());
         });
-        table.command("APPLY").summary("apply the buffered manipulations").manipulation(c -> {
+        table.command("APPLY").emptySurplusIgnored().summary("apply the buffered manipulations").manipulation(c -> {
             c.reference().applyPending();
             return c.ok();
         });
-        table.command("REASON").summary("apply the buffer and update the reasoner").manipulation(c -> {
+        table.command("REASON").emptySurplusIgnored()
+                .summary("apply the buffer and update the reasoner").manipulation(c -> {
             // Replayed, a REASON only applies: the restored reasoner is brought up to date once, at the end.
             if (c.replaying()) {
                 c.reference().applyPending();
@@ -119,6 +124,10 @@ public final class ReferenceCommands implements CommandGroup {
         });
         if (mount) {
             takeMount(reference, client);
+        }
+        String coverage = reference.coverage().loadReport();
+        if (!coverage.isEmpty()) {
+            warnings.append(warnings.isEmpty() ? "" : "; ").append(coverage);
         }
         return Response.ok(reference.isConsistent(), List.of()).withDescription(warnings.toString());
     }

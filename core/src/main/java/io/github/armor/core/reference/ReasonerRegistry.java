@@ -7,9 +7,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 import openllet.owlapi.OpenlletReasonerFactory;
@@ -29,15 +26,14 @@ public final class ReasonerRegistry {
             "JFACT", JFactFactory::new,
             "ELK", ElkReasonerFactory::new);
 
+    // ROS 1 ARMOR's own names (armor_api documents them): FaCT++ is what JFact ports to Java, and
+    // Snorocket was ARMOR's OWL 2 EL classifier, whose place ELK takes here.
+    private static final Map<String, String> ARMOR_NAMES = Map.of("FACT", "JFACT", "SNOROCKET", "ELK");
+
     // Complete OWL 2 DL reasoners, the most capable first (Openllet also applies SWRL built-ins).
     // ELK is never proposed: it accepts almost anything by ignoring what is not EL.
     private static final List<String> ALTERNATIVES = List.of("PELLET", "HERMIT", "JFACT");
     private static final long TRIAL_MS = 10_000;
-    private static final ScheduledExecutorService TRIAL_ALARM = Executors.newSingleThreadScheduledExecutor(r -> {
-        Thread thread = new Thread(r, "armor-reasoner-trial-limit");
-        thread.setDaemon(true);
-        return thread;
-    });
     // Where factory class names are looked up: the core's class path, plus the jars of plugin_dirs once set.
     private static volatile ClassLoader classLoader = ReasonerRegistry.class.getClassLoader();
 
@@ -69,20 +65,23 @@ public final class ReasonerRegistry {
     }
 
     private static boolean accepts(String candidate, OWLOntology ontology, long timeLimitMs) {
+        // Its own limit, not the directive's: the trial runs because a reasoner already refused.
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeLimitMs);
         Optional<OWLReasoner> reasoner = Optional.empty();
-        ScheduledFuture<?> alarm = null;
         try {
-            reasoner = Optional.of(factory(candidate).createReasoner(ontology, new SimpleConfiguration(timeLimitMs)));
+            reasoner = Optional.of(ReasonerCalls.run(null, deadline,
+                    () -> factory(candidate).createReasoner(ontology, new SimpleConfiguration())));
             OWLReasoner started = reasoner.get();
-            alarm = TRIAL_ALARM.schedule(started::interrupt, timeLimitMs, TimeUnit.MILLISECONDS);
-            started.isConsistent();
+            ReasonerCalls.run(started, deadline, started::isConsistent);
             return true;
+        } catch (ReasonerCalls.Overran e) {
+            if (e.abandoned()) {
+                reasoner = Optional.empty(); // the abandoned call disposes it
+            }
+            return false;
         } catch (RuntimeException | LinkageError e) {
             return false;
         } finally {
-            if (alarm != null) {
-                alarm.cancel(false);
-            }
             reasoner.ifPresent(r -> {
                 try {
                     r.dispose();
@@ -101,6 +100,7 @@ public final class ReasonerRegistry {
     public static String canonicalName(String name, String defaultName) {
         String chosen = name == null || name.isBlank() ? defaultName : name.trim();
         String upper = chosen.toUpperCase(Locale.ROOT);
+        upper = ARMOR_NAMES.getOrDefault(upper, upper);
         if (KNOWN.containsKey(upper)) {
             return upper;
         }

@@ -6,9 +6,6 @@ import io.github.armor.core.api.ExitCode;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Function;
@@ -57,16 +54,12 @@ public final class Reference {
     private final boolean bufferedManipulation;
     private final boolean bufferedReasoner;
     private final long reasonerTimeoutMs;
-    // One timer thread for every reference: it only ever calls OWLReasoner.interrupt().
-    private static final ScheduledExecutorService ALARMS = Executors.newSingleThreadScheduledExecutor(r -> {
-        Thread thread = new Thread(r, "armor-reasoner-time-limit");
-        thread.setDaemon(true);
-        return thread;
-    });
+    private final ReasonerCoverage coverage;
 
     private final ReentrantLock lock = new ReentrantLock(true);
 
     private final List<OWLOntologyChange> pending = new ArrayList<>();
+    // Null after a time limit took it away: made afresh when next needed (see reasoner()).
     private OWLReasoner reasoner;
     private boolean removedSinceSync;
     private boolean consistent = true;
@@ -100,15 +93,26 @@ public final class Reference {
         this.bufferedManipulation = settings.bufferedManipulation();
         this.bufferedReasoner = settings.bufferedReasoner();
         this.reasonerTimeoutMs = reasonerTimeoutMs;
-        this.reasoner = createReasoner();
-        refreshConsistency();
+        this.coverage = ReasonerCoverage.watch(reasonerName, ontology);
+        try {
+            ReasonerCalls.withBudget(reasonerTimeoutMs, () -> {
+                refreshConsistency();
+                return null;
+            });
+        } catch (RuntimeException e) {
+            coverage.close();
+            throw e;
+        }
     }
 
-    /** Runs {@code work} holding this reference, waiting at most {@code waitMs} for other directives. */
+    /**
+     * Runs {@code work} holding this reference, waiting at most {@code waitMs} for other
+     * directives; its reasoner calls share one reasoner time limit.
+     */
     public <T> T locked(long waitMs, Function<Reference, T> work) {
         acquire(waitMs);
         try {
-            return work.apply(this);
+            return ReasonerCalls.withBudget(reasonerTimeoutMs, () -> work.apply(this));
         } finally {
             release();
         }
@@ -175,6 +179,11 @@ public final class Reference {
         return reasonerName;
     }
 
+    /** What of the ontology the reasoner does not use (its answers may then be incomplete). */
+    public ReasonerCoverage coverage() {
+        return coverage;
+    }
+
     public boolean isConsistent() {
         return consistent;
     }
@@ -229,13 +238,15 @@ public final class Reference {
             throw new ArmorException(ExitCode.INCONSISTENT, "reference '" + name
                     + "' is inconsistent; QUERY CONSISTENCY explains why");
         }
-        return reasoner;
+        return reasoner();
     }
 
     /**
      * Runs a reasoner call within the reasoner time limit, turning the reasoner's own failures
      * into ARMOR codes. A reasoner that overruns is interrupted and replaced by a fresh one, so
-     * the reference stays usable (its next query reasons from scratch).
+     * the reference stays usable (its next query reasons from scratch); whatever it answered
+     * after the limit is discarded, and one that ignores the interruption is left behind
+     * ({@link ReasonerCalls}).
      */
     public <T> T guardReasoner(Supplier<T> call) {
         try {
@@ -243,7 +254,7 @@ public final class Reference {
         } catch (InconsistentOntologyException e) {
             consistent = false;
             throw new ArmorException(ExitCode.INCONSISTENT, "reference '" + name + "' is inconsistent", e);
-        } catch (TimeOutException | ReasonerInterruptedException e) {
+        } catch (TimeOutException | ReasonerInterruptedException | ReasonerCalls.Overran e) {
             throw overran(e);
         } catch (UnsupportedOperationException e) {
             throw new ArmorException(ExitCode.NOT_SUPPORTED, reasonerName + " does not support this: "
@@ -258,7 +269,10 @@ public final class Reference {
 
     /** Releases the reasoner; the reference must not be used afterwards. */
     public void dispose() {
-        reasoner.dispose();
+        coverage.close();
+        if (reasoner != null) {
+            reasoner.dispose();
+        }
     }
 
     /** Starts recording changes so that an atomic directive list can undo them. */
@@ -329,9 +343,10 @@ public final class Reference {
             rebuildReasoner();
             return;
         }
+        OWLReasoner current = reasoner();
         try {
             guardReasoner(() -> {
-                reasoner.flush();
+                current.flush();
                 return null;
             });
         } catch (ArmorException e) {
@@ -344,39 +359,51 @@ public final class Reference {
 
     private void rebuildReasoner() {
         try {
-            reasoner.dispose();
+            if (reasoner != null) {
+                reasoner.dispose();
+            }
         } catch (RuntimeException e) {
             // a reasoner that failed may not dispose cleanly; it is replaced either way
         }
-        reasoner = createReasoner();
-        removedSinceSync = false;
+        reasoner = null;
+        reasoner();
+    }
+
+    /** The reasoner, made afresh (over the ontology as it is) if a time limit took the last one away. */
+    private OWLReasoner reasoner() {
+        if (reasoner == null) {
+            reasoner = createReasoner();
+            removedSinceSync = false;
+        }
+        return reasoner;
     }
 
     private <T> T withinTimeLimit(Supplier<T> call) {
-        if (reasonerTimeoutMs <= 0) {
-            return call.get();
-        }
-        OWLReasoner running = reasoner;
-        ScheduledFuture<?> alarm = ALARMS.schedule(running::interrupt, reasonerTimeoutMs, TimeUnit.MILLISECONDS);
-        try {
-            return call.get();
-        } finally {
-            alarm.cancel(false);
-        }
+        return ReasonerCalls.run(reasoner(), ReasonerCalls.deadline(reasonerTimeoutMs), call);
     }
 
     private ArmorException overran(RuntimeException cause) {
-        rebuildReasoner();
+        boolean abandoned = cause instanceof ReasonerCalls.Overran overran && overran.abandoned();
+        if (!(cause instanceof ReasonerCalls.Overran overran) || overran.started()) {
+            // Interrupted, it may answer wrongly or not at all from now on: the next use makes another.
+            if (!abandoned) {
+                ReasonerCalls.disposeInBackground(reasoner); // an abandoned one is disposed by its call
+            }
+            reasoner = null;
+        }
         return new ArmorException(ExitCode.TIMEOUT, reasonerName + " exceeded the reasoner time limit of "
-                + reasonerTimeoutMs + " ms on reference '" + name + "' and was interrupted; the reference is"
-                + " usable and its reasoner starts afresh", cause);
+                + reasonerTimeoutMs + " ms on reference '" + name + "' and was interrupted" + (abandoned
+                ? " (it ignored the interruption and runs on in the background until it ends)" : "")
+                + "; nothing it computed is answered; the reference is usable and its reasoner starts afresh", cause);
     }
 
     private void refreshConsistency() {
         try {
-            consistent = withinTimeLimit(reasoner::isConsistent);
-        } catch (TimeOutException | ReasonerInterruptedException e) {
+            consistent = withinTimeLimit(reasoner()::isConsistent);
+        } catch (TimeOutException | ReasonerInterruptedException | ReasonerCalls.Overran e) {
             throw overran(e);
+        } catch (ArmorException e) {
+            throw e;
         } catch (RuntimeException e) {
             // An unsupported construct makes some reasoners fail on isConsistent; other
             // directives on the reference must stay usable, so only the answer says so.
@@ -386,19 +413,27 @@ public final class Reference {
     }
 
     private void precompute(InferenceType type) {
+        OWLReasoner current = reasoner();
         guardReasoner(() -> {
-            if (reasoner.getPrecomputableInferenceTypes().contains(type)) {
-                reasoner.precomputeInferences(type);
+            if (current.getPrecomputableInferenceTypes().contains(type)) {
+                current.precomputeInferences(type);
             }
             return null;
         });
     }
 
+    /**
+     * A reasoner over the ontology, made within the time limit. The limit is not handed to the
+     * reasoner's configuration: reasoners count such limits their own way (some return what they
+     * have when it passes); {@link ReasonerCalls} enforces it and interrupts them.
+     */
     private OWLReasoner createReasoner() {
-        SimpleConfiguration configuration = reasonerTimeoutMs > 0
-                ? new SimpleConfiguration(reasonerTimeoutMs) : new SimpleConfiguration();
         try {
-            return ReasonerRegistry.factory(reasonerName).createReasoner(ontology, configuration);
+            return ReasonerCalls.run(null, ReasonerCalls.deadline(reasonerTimeoutMs),
+                    () -> ReasonerRegistry.factory(reasonerName).createReasoner(ontology, new SimpleConfiguration()));
+        } catch (ReasonerCalls.Overran e) {
+            throw new ArmorException(ExitCode.TIMEOUT, reasonerName + " could not start on reference '" + name
+                    + "' within the reasoner time limit of " + reasonerTimeoutMs + " ms", e);
         } catch (ArmorException e) {
             throw e;
         } catch (RuntimeException | LinkageError e) {
