@@ -484,21 +484,4 @@ bool Batch::send()
   return answer.is_consistent;
 }
 
-// ---------------------------------------------------------------- directive
-
-armor_msgs::msg::ArmorDirectiveReq directive(
-  const std::string & client, const std::string & reference, const std::string & command,
-  const std::string & primary, const std::string & secondary,
-  const std::vector<std::string> & args)
-{
-  armor_msgs::msg::ArmorDirectiveReq request;
-  request.client_name = client;
-  request.reference_name = reference;
-  request.command = command;
-  request.primary_command_spec = primary;
-  request.secondary_command_spec = secondary;
-  request.args = args;
-  return request;
-}
-
 }  // namespace armor

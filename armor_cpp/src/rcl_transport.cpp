@@ -3,7 +3,6 @@
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <future>
@@ -33,7 +32,6 @@ namespace armor
 namespace
 {
 
-using Clock = std::chrono::steady_clock;
 using armor_msgs::srv::ArmorDirective;
 using armor_msgs::srv::ArmorDirectiveList;
 
@@ -46,6 +44,9 @@ std::string rcl_error()
   rcl_reset_error();
   return text;
 }
+
+// For clean-up, where a failure can only be ignored.
+void ignore(rcl_ret_t) {rcl_reset_error();}
 
 void check(rcl_ret_t ret, const std::string & what)
 {
@@ -104,6 +105,18 @@ struct RclTransport::Impl
   explicit Impl(const RclTransportOptions & options)
   : service_wait(options.service_wait)
   {
+    try {
+      start(options);
+    } catch (...) {
+      release();
+      throw;
+    }
+  }
+
+  ~Impl() {release();}
+
+  void start(const RclTransportOptions & options)
+  {
     rcl_allocator_t allocator = rcl_get_default_allocator();
     check(rcl_init_options_init(&init_options, allocator), "rcl_init_options_init");
     check(rcl_init(0, nullptr, &init_options, &context), "rcl_init");
@@ -131,21 +144,23 @@ struct RclTransport::Impl
     taker = std::thread([this] {take_answers();});
   }
 
-  ~Impl()
+  // Stop the taker and finish whatever was initialised (a zero-initialised handle's fini
+  // only reports that it was not, which is ignored).
+  void release()
   {
     running = false;
     if (taker.joinable()) {
-      (void)rcl_trigger_guard_condition(&wake);
+      ignore(rcl_trigger_guard_condition(&wake));
       taker.join();
     }
-    (void)rcl_wait_set_fini(&wait_set);
-    (void)rcl_guard_condition_fini(&wake);
-    (void)rcl_client_fini(&list.client, &node);
-    (void)rcl_client_fini(&directive.client, &node);
-    (void)rcl_node_fini(&node);
-    (void)rcl_shutdown(&context);
-    (void)rcl_context_fini(&context);
-    (void)rcl_init_options_fini(&init_options);
+    ignore(rcl_wait_set_fini(&wait_set));
+    ignore(rcl_guard_condition_fini(&wake));
+    ignore(rcl_client_fini(&list.client, &node));
+    ignore(rcl_client_fini(&directive.client, &node));
+    ignore(rcl_node_fini(&node));
+    ignore(rcl_shutdown(&context));
+    ignore(rcl_context_fini(&context));
+    ignore(rcl_init_options_fini(&init_options));
     rcl_reset_error();
   }
 
@@ -225,39 +240,23 @@ struct RclTransport::Impl
     return answer.get();
   }
 
-  // Block until the service has answered a harmless request from this client.
   template<typename Service>
   void wait_until_answered(Slot<Service> & slot)
   {
-    const auto deadline = Clock::now() + service_wait;
     typename Service::Request harmless;
     if constexpr (std::is_same_v<Service, ArmorDirective>) {
       harmless.armor_request = directive_of_words(contract::GET_ALL_REFS);
     }
-    while (Clock::now() < deadline) {
-      bool available = false;
-      if (rcl_service_server_is_available(&node, &slot.client, &available) != RCL_RET_OK) {
-        rcl_reset_error();
-      }
-      if (!available) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        continue;
-      }
-      auto remaining = std::chrono::duration_cast<std::chrono::milliseconds>(
-        deadline - Clock::now());
-      auto attempt = std::clamp(remaining, std::chrono::milliseconds(100),
-          std::chrono::milliseconds(2000));
-      try {
-        send(slot, harmless, attempt);
-        slot.answered_once = true;
-        return;
-      } catch (const ServiceCallError &) {
-        continue;
-      }
-    }
-    throw ServiceCallError("service " + slot.name + " did not answer within " +
-            std::to_string(service_wait.count() / 1000) +
-            " s; is the ARMOR node running (armor serve)?");
+    armor::wait_until_answered(slot.name, service_wait,
+      [&] {
+        bool available = false;
+        if (rcl_service_server_is_available(&node, &slot.client, &available) != RCL_RET_OK) {
+          rcl_reset_error();
+        }
+        return available;
+      },
+      [&](std::chrono::milliseconds attempt) {send(slot, harmless, attempt);});
+    slot.answered_once = true;
   }
 
   static armor_msgs::msg::ArmorDirectiveReq directive_of_words(const contract::Command & c)

@@ -9,7 +9,9 @@
 #define ARMOR_CPP__TRANSPORT_HPP_
 
 #include <chrono>
+#include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "armor_msgs/msg/armor_directive_req.hpp"
@@ -42,6 +44,21 @@ armor_msgs::msg::ArmorDirectiveReq directive(
   const std::string & client, const std::string & reference, const std::string & command,
   const std::string & primary = "", const std::string & secondary = "",
   const std::vector<std::string> & args = {});
+
+// Block until a service has answered a harmless request from this client, as every
+// transport does before its first call: a service that is discovered may still drop the
+// answer to a client whose response reader it has not matched yet (Fast DDS), and a lost
+// answer to a change cannot be asked for again.
+//
+//   service:       the service's name, for the error.
+//   service_wait:  how long to keep trying; ServiceCallError after that.
+//   available:     whether the service is discovered yet.
+//   ask_harmless:  send the harmless request and wait for its answer at most `attempt`;
+//                  throws ServiceCallError (CallTimeout) when none came.
+void wait_until_answered(
+  const std::string & service, std::chrono::milliseconds service_wait,
+  const std::function<bool()> & available,
+  const std::function<void(std::chrono::milliseconds attempt)> & ask_harmless);
 
 }  // namespace armor
 
