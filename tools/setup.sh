@@ -175,7 +175,7 @@ fi
 # ---------------------------------------------------------------- 2b. armor_cpp (C++ client)
 CPP_LOGIC=1
 CPP_PREFIX="$ROOT/install/armor_cpp"
-cpp_hash="$(hash_str "$CPP_LOGIC" "$msgs_hash" "$(hash_tree armor_cpp/include armor_cpp/src armor_cpp/test armor_cpp/examples)" \
+cpp_hash="$(hash_str "$CPP_LOGIC" "$msgs_hash" "$(hash_tree armor_cpp/include armor_cpp/src armor_cpp/test armor_cpp/examples armor_cpp/bench)" \
   "$(hash_of armor_cpp/CMakeLists.txt armor_cpp/package.xml)")"
 if up_to_date armor_cpp "$cpp_hash" && [ -f "$CPP_PREFIX/lib/libarmor_cpp.so" ] \
    && [ -x "$BUILD/armor_cpp/armor_cpp_live_test" ]; then
