@@ -7,8 +7,9 @@
 Starts a node in a namespace of its own, loads robotics.owl twice (one copy per client),
 then, in alternating rounds so that the machine's noise falls on both alike, times with each
 client: a query (instances of Room), a manipulation (an individual added to a class) and an
-atomic list of 10 such changes. The C++ side is build/armor_cpp/armor_cpp_round_trips (make
-setup builds it), a process of its own as any C++ program; the Python side runs here.
+atomic list of 10 such changes. Each client is a process of its own with the same arguments
+and output: build/armor_cpp/armor_cpp_round_trips (make setup builds it) and
+bench/round_trips.py.
 Prints p50/p99 per call and client, and the ratio of the p50s.
 """
 
@@ -18,7 +19,6 @@ import pathlib
 import subprocess
 import sys
 import tempfile
-import time
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 ROUND_TRIPS = REPO / 'build' / 'armor_cpp' / 'armor_cpp_round_trips'
@@ -26,33 +26,12 @@ NAMESPACE = f'/armor_cpp_bench_{os.getpid()}'
 KINDS = ('query', 'manipulation', 'list_of_10')
 
 
-def python_round_trips(reference, calls: int, round_number: int) -> dict:
-    """The same calls as armor_cpp_round_trips, from the Python client."""
-    samples = {kind: [] for kind in KINDS}
-    for _ in range(20):
-        reference.instances('Room')
-    for i in range(calls):
-        started = time.perf_counter()
-        reference.instances('Room')
-        samples['query'].append(time.perf_counter() - started)
-    for i in range(calls):
-        started = time.perf_counter()
-        reference.add_individual_to_class(f'py_box{round_number}_{i}', 'Box')
-        samples['manipulation'].append(time.perf_counter() - started)
-    for i in range(calls):
-        started = time.perf_counter()
-        with reference.batch() as batch:
-            for j in range(10):
-                batch.add_individual_to_class(f'py_item{round_number}_{i}_{j}', 'Box')
-        samples['list_of_10'].append(time.perf_counter() - started)
-    return samples
-
-
-def cpp_round_trips(reference: str, calls: int) -> dict:
-    done = subprocess.run([str(ROUND_TRIPS), NAMESPACE, reference, str(calls)],
+def round_trips(program: list, reference: str, calls: int) -> dict:
+    """Run a round-trip program (C++ or Python, same arguments); kind -> seconds."""
+    done = subprocess.run([*program, NAMESPACE, reference, str(calls)],
                           capture_output=True, text=True, timeout=1800)
     if done.returncode != 0:
-        raise RuntimeError(f'armor_cpp_round_trips failed: {done.stderr}')
+        raise RuntimeError(f'{program[-1]} failed: {done.stderr}')
     samples = {}
     for line in done.stdout.splitlines():
         kind, *seconds = line.split()
@@ -76,22 +55,22 @@ def main() -> None:
                       namespace=NAMESPACE)
     try:
         with Armor('bench_py', namespace=NAMESPACE, service_wait_s=120) as armor:
-            python_ref = armor.load_file('bench_py', str(ONTOLOGIES / 'robotics.owl'))
+            armor.load_file('bench_py', str(ONTOLOGIES / 'robotics.owl'))
             armor.load_file('bench_cpp', str(ONTOLOGIES / 'robotics.owl'))
-            samples = {'C++': {k: [] for k in KINDS}, 'Python': {k: [] for k in KINDS}}
-            for round_number in range(arguments.rounds):
-                for kind, values in cpp_round_trips('bench_cpp', arguments.calls).items():
-                    samples['C++'][kind] += values
-                python = python_round_trips(python_ref, arguments.calls, round_number)
-                for kind, values in python.items():
-                    samples['Python'][kind] += values
+        python = [sys.executable, str(REPO / 'bench' / 'round_trips.py')]
+        programs = {'C++': ([str(ROUND_TRIPS)], 'bench_cpp'), 'Python': (python, 'bench_py')}
+        samples = {client: {k: [] for k in KINDS} for client in programs}
+        for _ in range(arguments.rounds):
+            for client, (program, reference) in programs.items():
+                for kind, values in round_trips(program, reference, arguments.calls).items():
+                    samples[client][kind] += values
     finally:
         node.stop()
     print(f'C++ client (armor_cpp over rcl) vs Python client (rclpy), same node, same calls; '
           f'{arguments.rounds} alternating rounds of {arguments.calls} calls, load average '
           f'{os.getloadavg()[0]:.2f}')
-    print(f'| call | C++ p50 ms | C++ p99 ms | Python p50 ms | Python p99 ms | '
-          f'Python p50 / C++ p50 |')
+    print('| call | C++ p50 ms | C++ p99 ms | Python p50 ms | Python p99 ms | '
+          'Python p50 / C++ p50 |')
     print('|---|---|---|---|---|---|')
     for kind in KINDS:
         cpp = latency_summary(samples['C++'][kind])
