@@ -18,5 +18,8 @@ for report in glob.glob('core/target/surefire-reports/TEST-*.xml'):
 print(f'core: Tests run: {runs}, Failures: {failures}, Errors: {errors}, Skipped: {skipped}')
 PY
 
+echo "== C++ client: GoogleTest without a node (ctest; its live tests run under pytest)"
+ctest --test-dir build/armor_cpp --output-on-failure
+
 echo "== node, client and CLI: pytest over ROS 2"
 python -m pytest -p no:cacheprovider "$@"
