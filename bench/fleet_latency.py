@@ -8,8 +8,7 @@ On the virtual hosts of tests/integration/hosts.py (network namespaces on one sw
 links), with the node on "server" and Fast DDS's UDP transport only (as test_fleet.py):
   1. round trips (query, change, atomic list of 10 changes; round_trips.py and its C++ twin
      armor_cpp_round_trips, which leave the ontology as they found it) from a client on the
-     server's own
-     host and from a client on "robot1", across the links, for the C++ and Python clients;
+     server's own host and from a client on "robot1", across the links, for both clients;
   2. the same-host figures with Fast DDS's default transports (shared memory) for reference,
      on a node of the ordinary host network;
   3. discovery: wall time of a new C++ process (query_rooms) until its first answer, by
