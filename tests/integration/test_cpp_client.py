@@ -92,4 +92,3 @@ def test_the_docs_show_the_rclcpp_example_as_it_is_in_the_package():
     assert code_block(doc, 'cpp', '<!-- example: rclcpp_planner.cpp -->') == (
         EXAMPLES / 'rclcpp_planner.cpp').read_text()
     assert 'not compiled' in doc
-

@@ -228,8 +228,8 @@ def test_without_multicast_a_discovery_server_connects_the_hosts(tmp_path):
                                                      *query[3:]),
                                env=with_server, capture_output=True, text=True, timeout=150)
         assert found.returncode == 0, found.stderr + node.log()[-2000:]
-        assert found.stdout.splitlines()[1:] == [
-            '<http://www.example.org/robotics#bedroom>', '<http://www.example.org/robotics#kitchen>']
+        assert found.stdout.splitlines()[1:] == ['<http://www.example.org/robotics#bedroom>',
+                                                 '<http://www.example.org/robotics#kitchen>']
         cpp = subprocess.run(virtual_hosts.command('robot', str(QUERY_ROOMS)), env=with_server,
                              capture_output=True, text=True, timeout=120)
         assert cpp.returncode == 0 and cpp.stdout.startswith('kitchen'), cpp.stderr
