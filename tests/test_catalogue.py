@@ -68,3 +68,16 @@ def test_make_catalogue_gives_a_new_command_its_first_docs_row(core_text):
     assert ('| QUERY IND COUNT | class | how many instances | '
             '`armor call robotics QUERY IND COUNT -- class` |') in queries
     assert tool.docs_with_new_commands(doc, json.loads(core_text)) == doc
+
+
+def test_a_command_added_to_the_core_changes_the_cpp_contract_header(core_text):
+    core = json.loads(core_text)
+    assert tool.cpp_contract_header(core_text) == tool.CPP_CONTRACT.read_text()
+    core['commands'].append({'key': 'QUERY IND COUNT', 'words': ['QUERY', 'IND', 'COUNT'],
+                             'aliases': [], 'kind': 'query', 'changes_ontology': False,
+                             'args': {'required': ['class'], 'optional': [], 'variadic': False},
+                             'summary': 'how many instances'})
+    header = tool.cpp_contract_header(json.dumps(core))
+    assert ('inline constexpr Command QUERY_IND_COUNT{"QUERY", "IND", "COUNT", Kind::Query, '
+            '1, 0, false, false};') in header
+    assert '  &QUERY_IND_COUNT,\n};' in header

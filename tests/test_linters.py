@@ -19,7 +19,7 @@ import pytest
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 PYTHON_PACKAGES = ('armor_contract', 'armor_service', 'armor_client')
-ROS_PACKAGES = ('armor_msgs', *PYTHON_PACKAGES)
+ROS_PACKAGES = ('armor_msgs', 'armor_cpp', *PYTHON_PACKAGES)
 COPYRIGHT = '# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.'
 
 

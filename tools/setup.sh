@@ -9,6 +9,8 @@
 #   1b. linters    flake8, pydocstyle, mypy of tools/requirements-lint.txt (tests/test_linters.py)
 #   2. armor_msgs  cmake + make of armor_msgs/ into install/armor_msgs (build/armor_msgs)
 #   1c. planner    pyperplan of tools/requirements-planning.txt (PDDL tests, bench, demo --plan)
+#   2b. armor_cpp  cmake + make of the C++ client armor_cpp/ into install/armor_cpp (build/armor_cpp),
+#                  with its GoogleTest tests (Debian's libgtest-dev, installed here when missing)
 #   3. core        mvn package of core/ (when core/pom.xml exists)
 #   3b. plugins    mvn package of each plugins/*/pom.xml into install/armor_plugins
 #   4. python      editable installs of armor_contract/, armor_service/ and armor_client/
@@ -55,6 +57,19 @@ command -v mvn >/dev/null 2>&1 || die "Maven is required: 'mvn' not found (Debia
 for t in cmake make g++; do
   command -v "$t" >/dev/null 2>&1 || die "'$t' is required to build armor_msgs (Debian: apt-get install cmake build-essential)."
 done
+
+# GoogleTest for the C++ client's tests: Debian's package, installed when missing (we are root
+# on the project's machines; elsewhere say what to install).
+if [ ! -f /usr/lib/x86_64-linux-gnu/cmake/GTest/GTestConfig.cmake ] && [ ! -f /usr/lib/cmake/GTest/GTestConfig.cmake ]; then
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "prerequisites: installing GoogleTest (apt-get install libgtest-dev)"
+    apt-get install -y -q libgtest-dev >/dev/null 2>&1 \
+      || { apt-get update -q >/dev/null 2>&1 && apt-get install -y -q libgtest-dev >/dev/null; } \
+      || die "could not install libgtest-dev (GoogleTest, for the C++ client's tests)."
+  else
+    die "GoogleTest is required for the C++ client's tests (Debian: apt-get install libgtest-dev)."
+  fi
+fi
 
 mkdir -p "$STAMPS" "$LOGS"
 
@@ -169,6 +184,38 @@ else
   unset AMENT_PREFIX_PATH
   stamp armor_msgs "$msgs_hash"
   echo "armor_msgs: built in $(( $(now) - t0 )) s"
+fi
+
+# ---------------------------------------------------------------- 2b. armor_cpp (C++ client)
+CPP_LOGIC=1
+CPP_PREFIX="$ROOT/install/armor_cpp"
+cpp_hash="$(hash_str "$CPP_LOGIC" "$msgs_hash" "$(hash_tree armor_cpp/include armor_cpp/src armor_cpp/test armor_cpp/examples armor_cpp/bench)" \
+  "$(hash_of armor_cpp/CMakeLists.txt armor_cpp/package.xml)")"
+if up_to_date armor_cpp "$cpp_hash" && [ -f "$CPP_PREFIX/lib/libarmor_cpp.so" ] \
+   && [ -x "$BUILD/armor_cpp/armor_cpp_live_test" ]; then
+  echo "armor_cpp: up to date"
+else
+  t0=$(now); unstamp armor_cpp; : > "$LOGS/armor_cpp.log"
+  echo "armor_cpp: compiling the C++ client and its tests with cmake and make (log: build/logs/armor_cpp.log)"
+  if [ -f "$BUILD/armor_cpp/CMakeCache.txt" ] \
+     && ! grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=$ROOT/armor_cpp" "$BUILD/armor_cpp/CMakeCache.txt"; then
+    rm -rf "$BUILD/armor_cpp"
+  fi
+  export AMENT_PREFIX_PATH="$PREFIX:$VENV"
+  run_logged armor_cpp cmake -S armor_cpp -B "$BUILD/armor_cpp" -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_PREFIX_PATH="$PREFIX;$VENV" -DCMAKE_INSTALL_PREFIX="$CPP_PREFIX" \
+    -DPython3_EXECUTABLE="$VENV/bin/python" -DBUILD_TESTING=ON
+  # The wheels' libraries find each other (and their bundled copies of tinyxml2, OpenSSL...
+  # in ros_*.libs) through LD_LIBRARY_PATH, as install/setup.sh sets it; so does the linker.
+  wheel_libs="$PREFIX/lib:$VENV/lib"
+  for d in "$VENV"/lib/python$PYVER/site-packages/ros_*.libs; do wheel_libs="$wheel_libs:$d"; done
+  LD_LIBRARY_PATH="$wheel_libs${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
+    run_logged armor_cpp make -C "$BUILD/armor_cpp" -j2
+  rm -rf "$CPP_PREFIX"
+  run_logged armor_cpp make -C "$BUILD/armor_cpp" install
+  unset AMENT_PREFIX_PATH
+  stamp armor_cpp "$cpp_hash"
+  echo "armor_cpp: built in $(( $(now) - t0 )) s"
 fi
 
 # ---------------------------------------------------------------- 3. core (Java)
@@ -314,9 +361,13 @@ for _armor_d in "$_armor_venv"/lib/python@PYVER@/site-packages/ros_*.libs; do
 done
 _armor_prepend LD_LIBRARY_PATH "$_armor_venv/lib"
 _armor_prepend LD_LIBRARY_PATH "$_armor_prefix/lib"
+_armor_prepend LD_LIBRARY_PATH "$_armor_root/install/armor_cpp/lib"
 _ROS_WHEELS_BOOTSTRAP_COMPLETE=1
 _armor_prepend AMENT_PREFIX_PATH "$_armor_venv"
 _armor_prepend AMENT_PREFIX_PATH "$_armor_prefix"
+_armor_prepend CMAKE_PREFIX_PATH "$_armor_venv"
+_armor_prepend CMAKE_PREFIX_PATH "$_armor_prefix"
+_armor_prepend CMAKE_PREFIX_PATH "$_armor_root/install/armor_cpp"
 ARMOR_CORE_JAR="$_armor_root/install/armor_core/armor-core.jar"
 # The plugins make setup built (the node's default plugin_dirs).
 ARMOR_PLUGIN_DIRS="$_armor_root/install/armor_plugins"

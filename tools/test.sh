@@ -24,5 +24,8 @@ for report in glob.glob('core/target/surefire-reports/TEST-*.xml') + glob.glob(
 print(f'core and plugins: Tests run: {runs}, Failures: {failures}, Errors: {errors}, Skipped: {skipped}')
 PY
 
+echo "== C++ client: GoogleTest without a node (ctest; its live tests run under pytest)"
+ctest --test-dir build/armor_cpp --output-on-failure
+
 echo "== node, client and CLI: pytest over ROS 2"
 python -m pytest -p no:cacheprovider "$@"

@@ -20,55 +20,77 @@ import asyncio
 import concurrent.futures
 import contextlib
 import functools
-from typing import Any, AsyncIterator, Optional, Sequence
+from typing import Any, AsyncIterator, Sequence
 
 from armor_client.batch import BatchBase
-from armor_client.errors import ArmorMountError, error_for
-from armor_client.operations import Parser, ReferenceBase, SessionCommands, Words
-from armor_client.reference import default_client_name
-from armor_client.transport import ArmorTransport, directive
+from armor_client.errors import ArmorMountError
+from armor_client.operations import ReferenceBase
+from armor_client.session import Awaiting, SessionBase
+from armor_client.transport import directive
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
-from rclpy.node import Node
 
 
-class AsyncArmor(SessionCommands):
-    """The asyncio twin of Armor: same arguments, same methods, each a coroutine.
+class AsyncReference(ReferenceBase):
+    """The asyncio twin of Reference: every method returns an awaitable of Reference's result.
+
+    ``await ref.instances('Room')`` answers what ``Reference.instances('Room')`` answers;
+    ``async with ref.mounted():`` and ``async with ref.batch() as batch:`` work as their sync
+    counterparts do.
 
     Args:
-        client_name: the name this program uses in directives; None picks one per process.
-        namespace: the namespace of the ARMOR node.
-        node: a node this program already spins on another thread; None to create one.
-        timeout_s: longest wait for each answer (None: as long as it takes).
-        service_wait_s: how long the first call waits for the service to appear.
+        armor: the session that sends the directives.
+        name: the reference name.
         iris: answer entities as full IRIs instead of short names.
-        transport: an ArmorTransport to share.
-        max_concurrent: how many directives may wait for their answers at once.
     """
 
-    def __init__(self, client_name: Optional[str] = None, *, namespace: str = '',
-                 node: Optional[Node] = None, timeout_s: Optional[float] = 60.0,
-                 service_wait_s: float = 30.0, iris: bool = False,
-                 transport: Optional[ArmorTransport] = None, max_concurrent: int = 8):
-        self.client_name = client_name or default_client_name()
-        self.timeout_s = timeout_s
-        self.iris = iris
-        self._owns_transport = transport is None
-        self.transport = transport or ArmorTransport(node=node, namespace=namespace,
-                                                     service_wait_s=service_wait_s)
-        self._pool = concurrent.futures.ThreadPoolExecutor(max_concurrent,
-                                                           thread_name_prefix='armor-aio')
+    armor: 'AsyncArmor'
 
-    def reference(self, name: str, iris: Optional[bool] = None) -> 'AsyncReference':
-        """The awaitable object for a reference; nothing is sent yet.
+    @contextlib.asynccontextmanager
+    async def mounted(self) -> AsyncIterator['AsyncReference']:
+        """Hold the mount for the duration of an async with block.
 
-        Args:
-            name: the reference name.
-            iris: answer entities as IRIs (default: this session's setting).
+        Yields:
+            This reference.
+
+        Raises:
+            ArmorMountError: another client holds the mount.
+        """
+        # The mixins are annotated with Reference's results; here each returns an awaitable.
+        await self.mount()  # type: ignore[func-returns-value]
+        try:
+            yield self
+        except BaseException:
+            # The block's own error is the one to report, not a lost mount (lease, DROP).
+            with contextlib.suppress(ArmorMountError):
+                await self.unmount()  # type: ignore[func-returns-value]
+            raise
+        await self.unmount()  # type: ignore[func-returns-value]
+
+    def batch(self) -> 'AsyncBatch':
+        """A builder for changes sent as one atomic list when ``async with`` ends.
 
         Returns:
-            An AsyncReference.
+            An empty AsyncBatch on this reference.
         """
-        return AsyncReference(self, name, self.iris if iris is None else iris)
+        return AsyncBatch(self.armor, self.name)
+
+
+class AsyncArmor(Awaiting, SessionBase[AsyncReference]):
+    """The asyncio twin of Armor: the same arguments and methods, each a coroutine.
+
+    Args:
+        *args: Armor's arguments (client_name, then namespace, node, timeout_s,
+            service_wait_s, iris and transport by keyword).
+        max_concurrent: how many directives may wait for their answers at once.
+        **kwargs: Armor's keyword arguments.
+    """
+
+    _reference_class = AsyncReference
+
+    def __init__(self, *args: Any, max_concurrent: int = 8, **kwargs: Any):
+        super().__init__(*args, **kwargs)
+        self._pool = concurrent.futures.ThreadPoolExecutor(max_concurrent,
+                                                           thread_name_prefix='armor-aio')
 
     async def call(self, reference: str, command: str, primary: str = '', secondary: str = '',
                    args: Sequence[Any] = ()) -> ArmorDirectiveRes:
@@ -119,66 +141,6 @@ class AsyncArmor(SessionCommands):
     async def _in_pool(self, function: Any, *args: Any, **kwargs: Any) -> Any:
         loop = asyncio.get_running_loop()
         return await loop.run_in_executor(self._pool, functools.partial(function, *args, **kwargs))
-
-    def _loaded(self, name: str, response: ArmorDirectiveRes) -> 'AsyncReference':
-        reference = self.reference(name)
-        reference.consistent = response.is_consistent
-        return reference
-
-    async def _session(self, reference: str, words: Words, args: Sequence[Any],
-                       parse: Parser) -> Any:
-        response = await self.call(reference, *words, args)
-        if not response.success:
-            raise error_for(response)
-        return parse(response)
-
-
-class AsyncReference(ReferenceBase):
-    """The asyncio twin of Reference: every method returns an awaitable of Reference's result.
-
-    ``await ref.instances('Room')`` answers what ``Reference.instances('Room')`` answers;
-    ``async with ref.mounted():`` and ``async with ref.batch() as batch:`` work as their sync
-    counterparts do.
-
-    Args:
-        armor: the session that sends the directives.
-        name: the reference name.
-        iris: answer entities as full IRIs instead of short names.
-    """
-
-    armor: AsyncArmor
-
-    @contextlib.asynccontextmanager
-    async def mounted(self) -> AsyncIterator['AsyncReference']:
-        """Hold the mount for the duration of an async with block.
-
-        Yields:
-            This reference.
-
-        Raises:
-            ArmorMountError: another client holds the mount.
-        """
-        # The mixins are annotated with Reference's results; here each returns an awaitable.
-        await self.mount()  # type: ignore[func-returns-value]
-        try:
-            yield self
-        except BaseException:
-            # The block's own error is the one to report, not a lost mount (lease, DROP).
-            with contextlib.suppress(ArmorMountError):
-                await self.unmount()  # type: ignore[func-returns-value]
-            raise
-        await self.unmount()  # type: ignore[func-returns-value]
-
-    def batch(self) -> 'AsyncBatch':
-        """A builder for changes sent as one atomic list when ``async with`` ends.
-
-        Returns:
-            An empty AsyncBatch on this reference.
-        """
-        return AsyncBatch(self.armor, self.name)
-
-    async def _execute(self, words: Words, args: Sequence[Any], parse: Any) -> Any:
-        return self._answer(await self.armor.call(self.name, *words, args), parse)
 
 
 class AsyncBatch(BatchBase):

@@ -3,11 +3,12 @@
 
 ``Manipulations``, ``Queries`` and ``ReferenceCommands`` only build directives and say how to
 read the answer; the class that mixes them in decides what "send" means through
-``_execute``: Reference sends at once and returns the value, AsyncReference returns an
-awaitable of it, and Batch queues the directive for one atomic list. ``SessionCommands`` does
-the same for the directives of a session (loading, the utilities) through ``_session``, for
-Armor and AsyncArmor. Every method therefore ends in ``return self._execute(...)`` or
-``return self._session(...)``.
+``_execute``: a reference (ReferenceBase) sends through its session and returns what the
+session's ``_then`` makes of the answer (Reference: the value, AsyncReference: an awaitable of
+it), and Batch queues the directive for one atomic list. ``SessionCommands`` does the same for
+the directives of a session (loading, the utilities) through ``_session`` (session.py). Every
+method therefore ends in ``return self._execute(...)`` or ``return self._session(...)``, and
+is written once for the sync and the asyncio client alike.
 """
 
 import enum
@@ -1154,7 +1155,11 @@ class SessionCommands:
 
 
 class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge):
-    """What Reference and AsyncReference share: the state, and reading an answer.
+    """What Reference and AsyncReference share: the state, sending, and reading an answer.
+
+    Each directive goes through the session's ``call``, and its answer through the session's
+    ``_then``: the sync session hands the parsed value back, the asyncio one an awaitable of
+    it. Reference and AsyncReference add only their context managers (mounted, batch).
 
     Args:
         armor: the session that sends the directives (Armor or AsyncArmor).
@@ -1178,6 +1183,10 @@ class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge):
             Its name, or None (an awaitable of it from AsyncReference).
         """
         return self.armor.mounted_by(self.name)
+
+    def _execute(self, words: Words, args: Sequence[Any], parse: Parser) -> Any:
+        return self.armor._then(self.armor.call(self.name, *words, args),
+                                lambda response: self._answer(response, parse))
 
     def _answer(self, response: Any, parse: Parser) -> Any:
         """The parsed answer of a response to this reference; raises when it failed."""

@@ -10,101 +10,14 @@
 """
 
 import contextlib
-import os
-from typing import Any, Iterator, Optional, Sequence
+from typing import Any, Iterator, Sequence
 
 from armor_client.batch import Batch
-from armor_client.errors import ArmorMountError, error_for
-from armor_client.operations import Parser, ReferenceBase, SessionCommands, Words
-from armor_client.transport import ArmorTransport, directive
+from armor_client.errors import ArmorMountError
+from armor_client.operations import ReferenceBase
+from armor_client.session import Blocking, SessionBase
+from armor_client.transport import directive
 from armor_msgs.msg import ArmorDirectiveRes
-from rclpy.node import Node
-
-
-def default_client_name() -> str:
-    """A client name unique to this process: ``armor_py_<pid>``."""
-    return f'armor_py_{os.getpid()}'
-
-
-class Armor(SessionCommands):
-    """A connection to one ARMOR node, speaking as one client.
-
-    Args:
-        client_name: the name this program uses in directives (the mount holder's name);
-            None picks ``armor_py_<pid>``.
-        namespace: the namespace of the ARMOR node ('' for the default).
-        node: a node this program already spins; None to create and spin one.
-        timeout_s: longest wait for each answer (None: as long as it takes).
-        service_wait_s: how long the first call waits for the service to appear.
-        iris: answer entities as full IRIs instead of short names.
-        transport: an ArmorTransport to share (then namespace and node are not used).
-    """
-
-    def __init__(self, client_name: Optional[str] = None, *, namespace: str = '',
-                 node: Optional[Node] = None, timeout_s: Optional[float] = 60.0,
-                 service_wait_s: float = 30.0, iris: bool = False,
-                 transport: Optional[ArmorTransport] = None):
-        self.client_name = client_name or default_client_name()
-        self.timeout_s = timeout_s
-        self.iris = iris
-        self._owns_transport = transport is None
-        self.transport = transport or ArmorTransport(node=node, namespace=namespace,
-                                                     service_wait_s=service_wait_s)
-
-    def reference(self, name: str, iris: Optional[bool] = None) -> 'Reference':
-        """The object for a reference that is loaded (or will be).
-
-        Args:
-            name: the reference name.
-            iris: answer entities as IRIs (default: this session's setting).
-
-        Returns:
-            A Reference; nothing is sent until a method is called.
-        """
-        return Reference(self, name, self.iris if iris is None else iris)
-
-    def call(self, reference: str, command: str, primary: str = '', secondary: str = '',
-             args: Sequence[Any] = ()) -> ArmorDirectiveRes:
-        """Send any directive as this client and return ARMOR's raw response.
-
-        Args:
-            reference: the reference name ('' for none).
-            command: the command word.
-            primary: the primary spec.
-            secondary: the secondary spec.
-            args: the arguments (each sent as str).
-
-        Returns:
-            The response, also when the directive failed.
-
-        Raises:
-            ArmorServiceCallError: the service could not be called or did not answer in time.
-        """
-        return self.transport.call(
-            directive(self.client_name, reference, command, primary, secondary, args),
-            timeout_s=self.timeout_s)
-
-    def close(self) -> None:
-        """Release the transport (when this object created it)."""
-        if self._owns_transport:
-            self.transport.close()
-
-    def __enter__(self) -> 'Armor':
-        return self
-
-    def __exit__(self, *exc: Any) -> None:
-        self.close()
-
-    def _loaded(self, name: str, response: ArmorDirectiveRes) -> 'Reference':
-        reference = self.reference(name)
-        reference.consistent = response.is_consistent
-        return reference
-
-    def _session(self, reference: str, words: Words, args: Sequence[Any], parse: Parser) -> Any:
-        response = self.call(reference, *words, args)
-        if not response.success:
-            raise error_for(response)
-        return parse(response)
 
 
 class Reference(ReferenceBase):
@@ -120,7 +33,7 @@ class Reference(ReferenceBase):
         iris: answer entities as full IRIs instead of short names.
     """
 
-    armor: Armor
+    armor: 'Armor'
 
     @contextlib.contextmanager
     def mounted(self) -> Iterator['Reference']:
@@ -154,5 +67,51 @@ class Reference(ReferenceBase):
         return Batch(self.armor.transport, self.armor.client_name, self.name,
                      self.armor.timeout_s)
 
-    def _execute(self, words: Words, args: Sequence[Any], parse: Any) -> Any:
-        return self._answer(self.armor.call(self.name, *words, args), parse)
+
+class Armor(Blocking, SessionBase[Reference]):
+    """A connection to one ARMOR node, speaking as one client.
+
+    Args:
+        client_name: the name this program uses in directives (the mount holder's name);
+            None picks ``armor_py_<pid>``.
+        namespace: the namespace of the ARMOR node ('' for the default).
+        node: a node this program already spins; None to create and spin one.
+        timeout_s: longest wait for each answer (None: as long as it takes).
+        service_wait_s: how long the first call waits for the service to appear.
+        iris: answer entities as full IRIs instead of short names.
+        transport: an ArmorTransport to share (then namespace and node are not used).
+    """
+
+    _reference_class = Reference
+
+    def call(self, reference: str, command: str, primary: str = '', secondary: str = '',
+             args: Sequence[Any] = ()) -> ArmorDirectiveRes:
+        """Send any directive as this client and return ARMOR's raw response.
+
+        Args:
+            reference: the reference name ('' for none).
+            command: the command word.
+            primary: the primary spec.
+            secondary: the secondary spec.
+            args: the arguments (each sent as str).
+
+        Returns:
+            The response, also when the directive failed.
+
+        Raises:
+            ArmorServiceCallError: the service could not be called or did not answer in time.
+        """
+        return self.transport.call(
+            directive(self.client_name, reference, command, primary, secondary, args),
+            timeout_s=self.timeout_s)
+
+    def close(self) -> None:
+        """Release the transport (when this object created it)."""
+        if self._owns_transport:
+            self.transport.close()
+
+    def __enter__(self) -> 'Armor':
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.close()

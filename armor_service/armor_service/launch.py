@@ -6,7 +6,7 @@ import signal
 import subprocess
 import sys
 import time
-from typing import Optional, Sequence
+from typing import Mapping, Optional, Sequence
 
 
 class ArmorNodeProcess:
@@ -16,21 +16,24 @@ class ArmorNodeProcess:
         log_path: where the node's stdout and stderr go.
         ros_args: ROS arguments after --ros-args (-p name:=value, -r __ns:=/x, ...).
         cwd: working directory of the node (relative paths resolve against it).
+        command_prefix: a command that runs the node, such as ``ip netns exec host1``.
+        env: the node's environment (None: this process's).
 
     Unless ros_args set state_dir, the node keeps its journals in a `state` folder beside the
     log, so a scripted node never restores what another run left in the user's data directory.
     """
 
     def __init__(self, log_path: pathlib.Path, ros_args: Sequence[str] = (),
-                 cwd: Optional[pathlib.Path] = None):
+                 cwd: Optional[pathlib.Path] = None, command_prefix: Sequence[str] = (),
+                 env: Optional[Mapping[str, str]] = None):
         self.log_path = pathlib.Path(log_path)
         ros_args = list(ros_args)
         if not any(arg.startswith('state_dir:=') for arg in ros_args):
             ros_args += ['-p', f'state_dir:={self.log_path.parent / "state"}']
         self._log = open(self.log_path, 'w')
         self.process = subprocess.Popen(
-            [sys.executable, '-m', 'armor_service.node', '--ros-args', *ros_args],
-            stdout=self._log, stderr=subprocess.STDOUT, cwd=cwd)
+            [*command_prefix, sys.executable, '-m', 'armor_service.node', '--ros-args', *ros_args],
+            stdout=self._log, stderr=subprocess.STDOUT, cwd=cwd, env=env)
 
     def core_pid(self, wait_s: float = 60.0) -> int:
         """PID of the node's Java core (waits while a core is being restarted)."""

@@ -93,12 +93,13 @@ def iris(*names: str) -> list:
     return sorted(iri(n) for n in names)
 
 
-def start_node(scratch: pathlib.Path, *ros_args: str, namespace: str = ''):
+def start_node(scratch: pathlib.Path, *ros_args: str, namespace: str = '', **process):
     """A node preloading robotics.owl as "robotics", reading and writing in scratch only.
 
     Its state directory is scratch/state, so it restores nothing but its own earlier state.
     A node started beside the session's node needs a namespace of its own: two nodes serving
-    one service name would both receive every request.
+    one service name would both receive every request. ``process``: command_prefix and env of
+    ArmorNodeProcess (a node on another host, with its own DDS settings).
     """
     if namespace:
         ros_args = (*ros_args, '-r', f'__ns:={namespace}')
@@ -107,7 +108,7 @@ def start_node(scratch: pathlib.Path, *ros_args: str, namespace: str = ''):
         '-p', f'preload_file:={ONTOLOGIES / "robotics.owl"}', '-p', 'preload_reference:=robotics',
         '-p', f'allowed_dirs:=["{ONTOLOGIES}", "{TEST_ONTOLOGIES}", "{scratch}"]',
         '-p', f'state_dir:={scratch / "state"}', *ros_args],
-        cwd=scratch)
+        cwd=scratch, **process)
     node.scratch = scratch
     return node
 

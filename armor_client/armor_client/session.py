@@ -1,0 +1,95 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""What Armor and AsyncArmor share: the session, written once for both.
+
+A session is a client name, a transport and how answers are read. The sync and the asyncio
+sessions differ in two things only: how a directive is sent (``call``: at once, or on a worker
+thread as an awaitable) and how its answer is carried on (``_then``: ``Blocking`` applies the
+next step to the response, ``Awaiting`` returns a coroutine that awaits it first). Every
+command method (operations.py), of the session and of its references, goes through those
+two, so a method added once serves both clients.
+"""
+
+import os
+from typing import Any, Awaitable, Callable, Generic, Optional, Sequence, Type, TypeVar
+
+from armor_client.errors import error_for
+from armor_client.operations import Parser, ReferenceBase, SessionCommands, Words
+from armor_client.transport import ArmorTransport
+from rclpy.node import Node
+
+R = TypeVar('R', bound=ReferenceBase)
+
+
+class Blocking:
+    """Answers carried on at once: the sync client's ``_then``."""
+
+    @staticmethod
+    def _then(response: Any, then: Callable[[Any], Any]) -> Any:
+        return then(response)
+
+
+class Awaiting:
+    """Answers carried on when awaited: the asyncio client's ``_then``."""
+
+    @staticmethod
+    def _then(response: Awaitable[Any], then: Callable[[Any], Any]) -> Awaitable[Any]:
+        async def carried_on() -> Any:
+            return then(await response)
+        return carried_on()
+
+
+class SessionBase(SessionCommands, Generic[R]):
+    """A connection to one ARMOR node, speaking as one client (see Armor for the arguments)."""
+
+    _reference_class: Type[R]
+
+    def __init__(self, client_name: Optional[str] = None, *, namespace: str = '',
+                 node: Optional[Node] = None, timeout_s: Optional[float] = 60.0,
+                 service_wait_s: float = 30.0, iris: bool = False,
+                 transport: Optional[ArmorTransport] = None):
+        self.client_name = client_name or default_client_name()
+        self.timeout_s = timeout_s
+        self.iris = iris
+        self._owns_transport = transport is None
+        self.transport = transport or ArmorTransport(node=node, namespace=namespace,
+                                                     service_wait_s=service_wait_s)
+
+    def reference(self, name: str, iris: Optional[bool] = None) -> R:
+        """The object for a reference that is loaded (or will be); nothing is sent yet.
+
+        Args:
+            name: the reference name.
+            iris: answer entities as IRIs (default: this session's setting).
+
+        Returns:
+            A Reference (AsyncReference from AsyncArmor).
+        """
+        return self._reference_class(self, name, self.iris if iris is None else iris)
+
+    def call(self, reference: str, command: str, primary: str = '', secondary: str = '',
+             args: Sequence[Any] = ()) -> Any:
+        raise NotImplementedError
+
+    @staticmethod
+    def _then(response: Any, then: Callable[[Any], Any]) -> Any:
+        raise NotImplementedError
+
+    def _loaded(self, name: str, response: Any) -> R:
+        reference = self.reference(name)
+        reference.consistent = response.is_consistent
+        return reference
+
+    def _session(self, reference: str, words: Words, args: Sequence[Any], parse: Parser) -> Any:
+        return self._then(self.call(reference, *words, args),
+                          lambda response: parse(_checked(response)))
+
+
+def _checked(response: Any) -> Any:
+    if not response.success:
+        raise error_for(response)
+    return response
+
+
+def default_client_name() -> str:
+    """A client name unique to this process: ``armor_py_<pid>``."""
+    return f'armor_py_{os.getpid()}'
