@@ -161,3 +161,24 @@ def test_a_mapping_naming_something_absent_answers_224_naming_it(office, call):
          'PROBLEM', '--', str(TEST_ONTOLOGIES / 'pddl' / 'missing.yaml')],
         capture_output=True, text=True, timeout=120)
     assert shown.returncode == 1 and '209' in shown.stderr and 'missing.yaml' in shown.stderr
+
+
+def test_the_robotics_reference_of_make_run_plans_a_visit_to_every_occupied_room(
+        session, armor_node):
+    """The README's reference: moving a person into a room adds that room to the goal."""
+    mapping = shutil.copy(REPO / 'examples' / 'pddl' / 'robotics-mapping.yaml',
+                          armor_node.scratch / 'robotics-mapping.yaml')
+    robotics = session.reference('robotics')
+    [where] = robotics.object_values('isIn', 'alice')
+    robotics.replace_object_value('isIn', 'alice', 'corridor1', where)
+    try:
+        before = robotics.pddl_problem(str(mapping))
+        assert goal_of(before) == [('visited', 'kitchen')]
+        assert len(solved(before)) == 2        # kitchen -> corridor1 -> kitchen
+        robotics.replace_object_value('isIn', 'alice', 'bedroom', 'corridor1')
+        after = robotics.pddl_problem(str(mapping))
+        assert goal_of(after) == [('visited', 'bedroom'), ('visited', 'kitchen')]
+        assert len(solved(after)) == 4
+    finally:
+        [now] = robotics.object_values('isIn', 'alice')
+        robotics.replace_object_value('isIn', 'alice', where, now)
