@@ -184,9 +184,13 @@ class _Services:
                      timeout_s)
 
     def _prove(self) -> None:
-        """Wait until armor_unsubscribe has answered once (transport.py says why)."""
+        """Wait until armor_unsubscribe has answered once (transport.py says why).
+
+        Again after the services went away (a restarted node): a request sent while no server
+        is there is lost, and its caller would wait for ever.
+        """
         with self._lock:
-            if self._proven:
+            if self._proven and self._subscribe.service_is_ready():
                 return
             deadline = time.monotonic() + self._service_wait_s
             for client in (self._subscribe, self._unsubscribe):
