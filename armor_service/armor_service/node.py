@@ -11,13 +11,16 @@ import difflib
 import os
 import sys
 
+from armor_contract.events import CHANGE_QOS, CHANGE_TOPIC
 from armor_contract.exit_codes import ExitCode
 from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
+from armor_msgs.msg import ArmorChange
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service import wire
 from armor_service.core_process import CoreProcess, CoreUnavailable
 from armor_service.extensions import load_extensions
 from armor_service.parameters import all_parameters, core_settings, Parameter
+from armor_service.subscriptions import SubscriptionTopics
 import rclpy
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
@@ -26,7 +29,7 @@ from rclpy.node import Node
 
 
 class ArmorService(Node):
-    """Serves armor_interface_srv and armor_interface_serialized_srv."""
+    """Serves ARMOR's two services; publishes armor_changes; serves subscriptions to answers."""
 
     def __init__(self):
         super().__init__('armor_service')
@@ -37,12 +40,17 @@ class ArmorService(Node):
         self._core = CoreProcess(
             self._core_jar(), settings, jvm_options=tuple(self._value('jvm_options')),
             start_timeout_s=self._value('core_start_timeout_s'), logger=self.get_logger(),
-            on_ready=self._preload)
-        self._core.start()
+            on_ready=self._on_core_ready)
         # Each callback blocks until the core answers. A reentrant group on a multi-threaded
         # executor lets a slow REASON on one reference wait while queries on others (and on
         # the same one, which the core serialises per reference) are answered meanwhile.
         group = ReentrantCallbackGroup()
+        # Before the core starts: the preload's LOAD is a change too.
+        self._change_publisher = self.create_publisher(ArmorChange, CHANGE_TOPIC, CHANGE_QOS)
+        self._core.add_event_listener(self.on_core_event)
+        self._answer_topics = SubscriptionTopics(self, self._core, group,
+                                                 lambda: self._value('subscription_idle_s'))
+        self._core.start()
         self.create_service(ArmorDirective, DIRECTIVE_SERVICE, self.directive_callback,
                             qos_profile=SERVICE_QOS, callback_group=group)
         self.create_service(ArmorDirectiveList, LIST_SERVICE,
@@ -51,7 +59,8 @@ class ArmorService(Node):
         self._extensions = load_extensions(self, self._value('extensions'))
         self.get_logger().info(
             f'ARMOR ready: services {self.resolve_service_name(DIRECTIVE_SERVICE)} and '
-            f'{self.resolve_service_name(LIST_SERVICE)}; core pid '
+            f'{self.resolve_service_name(LIST_SERVICE)}, changes on '
+            f'{self.resolve_topic_name(CHANGE_TOPIC)}; core pid '
             f'{self._core.pid}. Try: armor call {self._value("preload_reference") or "REF"} '
             'QUERY IND CLASS -- Room')
 
@@ -90,8 +99,14 @@ class ArmorService(Node):
             response.armor_responses = [self._timed_out() for _ in directives]
         return response
 
+    def on_core_event(self, event: dict) -> None:
+        """Publish what the core announces (on its event thread, in the core's order)."""
+        if event.get('event') == 'change':
+            self._change_publisher.publish(wire.change_from_json(event))
+
     def shutdown_core(self) -> None:
         self._extensions.close()
+        self._answer_topics.end_all()
         self._core.stop()
 
     def _timed_out(self):
@@ -104,6 +119,11 @@ class ArmorService(Node):
     def _request_timeout(self):
         seconds = self._value('request_timeout_s')
         return seconds if seconds > 0 else None
+
+    def _on_core_ready(self, send) -> None:
+        """Bring a new core to where the last one was: the preload, then the subscriptions."""
+        self._preload(send)
+        self._answer_topics.register_again(send)
 
     def _preload(self, send) -> None:
         """Load the preload file into a new core, before it takes any request."""

@@ -140,6 +140,9 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
               'a string array or names separated by commas)', also_string=name_list),
     Parameter('plugin_dir', 'string', '',
               'deprecated since 0.3.0: one directory, added to plugin_dirs'),
+    Parameter('subscription_idle_s', 'double', 5.0,
+              "a subscription whose topic has had no subscriber this long ends (its client "
+              "went away)", read_only=False),
 )
 
 

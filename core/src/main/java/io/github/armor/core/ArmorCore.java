@@ -15,6 +15,9 @@ import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.command.DirectiveLog;
 import io.github.armor.core.command.Rendering;
 import io.github.armor.core.durability.StateStore;
+import io.github.armor.core.events.ChangeEvent;
+import io.github.armor.core.events.EventFeed;
+import io.github.armor.core.events.Subscriptions;
 import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
@@ -31,6 +34,10 @@ import org.slf4j.LoggerFactory;
  * The knowledge core's single entry point: a directive (or an atomic list of them) in, ARMOR's
  * response out. Every failure becomes an exit code here; nothing a client sends escapes as an
  * exception. Thread-safe: directives on different references run in parallel.
+ *
+ * <p>Every acknowledged change is also published on {@link #events()} with the reference's new
+ * revision (see {@link ChangeEvent} for what makes one), while the directive still holds the
+ * reference, so each reference's events leave in revision order.
  */
 public final class ArmorCore implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(ArmorCore.class);
@@ -42,6 +49,8 @@ public final class ArmorCore implements AutoCloseable {
     private final DirectiveLog directiveLog = new DirectiveLog(System.err);
     private final Map<String, Long> lastHeardFrom = new ConcurrentHashMap<>();
     private final StateStore state;
+    private final EventFeed events = new EventFeed();
+    private final Subscriptions subscriptions = new Subscriptions(events, this::askSubscribed);
     // Replayed directives were journaled when first acknowledged: they must not be again.
     private final ThreadLocal<Boolean> replaying = ThreadLocal.withInitial(() -> false);
 
@@ -74,6 +83,7 @@ public final class ArmorCore implements AutoCloseable {
                 reference.setMountedBy(restorable.mountedBy());
                 references.register(reference);
                 restorable.records().forEach(this::replay);
+                reference.setRevision(restorable.revision());
                 reference.synchroniseReasoner();
                 state.adopt(restorable);
                 LOG.info("restored reference '{}' from the state directory {}: {} axioms, {} individuals,"
@@ -87,10 +97,10 @@ public final class ArmorCore implements AutoCloseable {
         }
     }
 
-    private void replay(List<Directive> record) {
+    private void replay(StateStore.JournaledChange record) {
         replaying.set(true);
         try {
-            for (Directive directive : record) {
+            for (Directive directive : record.directives()) {
                 Response response = run(directive, null);
                 if (!response.success()) {
                     LOG.warn("replaying {} failed: {} {}", directive.describe(), response.exitCode(),
@@ -105,14 +115,72 @@ public final class ArmorCore implements AutoCloseable {
     /** Finishes writing state and releases the state directory; the core answers nothing afterwards. */
     @Override
     public void close() {
+        subscriptions.close();
+        events.close();
         if (state != null) {
             state.close();
         }
     }
 
-    /** Directives whose effect must survive a restart (by kind: changes and mounting), when not replayed. */
-    private boolean journaled(CommandSpec spec) {
-        return state != null && !replaying.get() && spec.kind().journaled();
+    /** Where acknowledged changes are announced: {@link ChangeEvent}s, and subscriptions' answers. */
+    public EventFeed events() {
+        return events;
+    }
+
+    /** Standing queries whose answers' changes are published on {@link #events()}. */
+    public Subscriptions subscriptions() {
+        return subscriptions;
+    }
+
+    /**
+     * Asks a subscription's query ({@link Subscriptions.Evaluator}) as {@link #execute} would, but
+     * only a QUERY, without logging it and without counting it as its client's activity (a standing
+     * query must not keep a mount lease alive).
+     */
+    private Subscriptions.Evaluation askSubscribed(Directive query, long unlessRevision, long expectRevision) {
+        long[] revision = {-1};
+        boolean[] postponed = {false};
+        try {
+            SizeLimits.check(query);
+            CommandSpec spec = commands.find(query.key()).orElse(null);
+            if (spec == null || spec.kind() != CommandKind.QUERY) {
+                throw new ArmorException(ExitCode.UNKNOWN_COMMAND, "only a query (a QUERY command) can be"
+                        + " subscribed to; " + query.describe() + (spec == null ? " is not a command"
+                        : " is a " + spec.kind().catalogueName()));
+            }
+            if (query.referenceName().isEmpty()) {
+                throw new ArmorException(ExitCode.NO_REFERENCE_NAME, "no reference name given for "
+                        + query.describe());
+            }
+            spec.checkArity(query.args().size());
+            Reference target = references.get(query.referenceName());
+            CommandContext context = context(query, target);
+            Response underLock = target.locked(config.lockWaitMs(), reference -> {
+                revision[0] = reference.revision();
+                postponed[0] = expectRevision != Subscriptions.ANY_REVISION && revision[0] != expectRevision;
+                return revision[0] == unlessRevision || postponed[0] ? null : spec.handler().run(context);
+            });
+            if (postponed[0]) {
+                return Subscriptions.Evaluation.POSTPONED;
+            }
+            return underLock == null ? null
+                    : new Subscriptions.Evaluation(revision[0], context.finishAfterRelease(underLock));
+        } catch (ArmorException e) {
+            return new Subscriptions.Evaluation(revision[0], Response.failure(e, consistencyOf(query)));
+        } catch (RuntimeException | LinkageError | StackOverflowError e) {
+            LOG.error("internal error on subscribed {}", query, e);
+            return new Subscriptions.Evaluation(revision[0], Response.failure(new ArmorException(
+                    ExitCode.INTERNAL_ERROR, "internal error on " + query.describe() + ": " + e),
+                    consistencyOf(query)));
+        }
+    }
+
+    /**
+     * Directives whose effect must survive a restart (by kind: changes and mounting), when not
+     * replayed: each acknowledged one is journaled (with a state directory) and makes a revision.
+     */
+    private boolean makesRevision(CommandSpec spec) {
+        return !replaying.get() && spec.kind().journaled();
     }
 
     /** The answer of a list: one response per directive, in order. */
@@ -170,6 +238,7 @@ public final class ArmorCore implements AutoCloseable {
                 return new ListResponse(false, false, undone);
             }
             list.commit();
+            list.announce();
             boolean consistent = responses.isEmpty() || responses.get(responses.size() - 1).isConsistent();
             return new ListResponse(true, consistent, responses);
         }
@@ -247,11 +316,16 @@ public final class ArmorCore implements AutoCloseable {
                     if (list != null && spec.mountChecked()) {
                         list.changedBy.add(list.position);
                     }
-                    if (list != null && journaled(spec)) {
+                    if (list != null && makesRevision(spec)) {
                         list.toJournal.computeIfAbsent(reference, r -> new ArrayList<>()).add(directive);
                     }
-                    if (state != null && !replaying.get() && spec.kind() == CommandKind.DROPPING) {
-                        state.dropped(reference);
+                    if (!replaying.get() && spec.kind() == CommandKind.DROPPING) {
+                        if (state != null) {
+                            state.dropped(reference);
+                        }
+                        // A DROP is final even inside a list (no rollback brings a reference back).
+                        events.publish(ChangeEvent.now(reference.name(), reference.revision() + 1, List.of(directive),
+                                reference.isConsistent()));
                     }
                     return response;
                 });
@@ -273,9 +347,17 @@ public final class ArmorCore implements AutoCloseable {
         }
         try {
             Response response = spec.handler().run(context);
-            if (list == null && journaled(spec)) {
-                state.record(reference, List.of(directive));
-                state.checkpointIfDue(reference);
+            if (list == null && makesRevision(spec)) {
+                long revision = reference.revision() + 1;
+                if (state != null) {
+                    state.record(reference, revision, List.of(directive));
+                }
+                reference.setRevision(revision);
+                if (state != null) {
+                    state.checkpointIfDue(reference);
+                }
+                events.publish(ChangeEvent.now(reference.name(), revision, List.of(directive),
+                        reference.isConsistent()));
             }
             return response;
         } catch (RuntimeException | StackOverflowError e) {
@@ -300,6 +382,15 @@ public final class ArmorCore implements AutoCloseable {
             } catch (ArmorException e) {
                 references.remove(made);
                 throw e;
+            }
+        }
+        if (!replaying.get() && !existed && made != null) {
+            ChangeEvent creation = ChangeEvent.now(made.name(), made.revision(), List.of(directive),
+                    made.isConsistent());
+            if (list == null) {
+                events.publish(creation);
+            } else {
+                list.creations.add(creation);
             }
         }
         if (list != null) {
@@ -364,14 +455,32 @@ public final class ArmorCore implements AutoCloseable {
         final List<Reference> created = new ArrayList<>();
         final Set<Integer> changedBy = new LinkedHashSet<>();
         final Map<Reference, List<Directive>> toJournal = new java.util.LinkedHashMap<>();
+        final List<ChangeEvent> creations = new ArrayList<>();
         int position;
 
-        /** One journal record per reference for the whole list, before it is acknowledged. */
+        /**
+         * One journal record per reference for the whole list, before it is acknowledged: the
+         * list is one revision of each reference it changed.
+         */
         void journal() {
             toJournal.forEach((reference, directives) -> {
-                ArmorCore.this.state.record(reference, directives);
+                if (ArmorCore.this.state != null) {
+                    ArmorCore.this.state.record(reference, reference.revision() + 1, directives);
+                }
             });
-            toJournal.keySet().forEach(reference -> ArmorCore.this.state.checkpointIfDue(reference));
+            toJournal.keySet().forEach(reference -> {
+                reference.setRevision(reference.revision() + 1);
+                if (ArmorCore.this.state != null) {
+                    ArmorCore.this.state.checkpointIfDue(reference);
+                }
+            });
+        }
+
+        /** After the commit, while the list still holds its references: its creations, then its changes. */
+        void announce() {
+            creations.forEach(events::publish);
+            toJournal.forEach((reference, directives) -> events.publish(ChangeEvent.now(reference.name(),
+                    reference.revision(), directives, reference.isConsistent())));
         }
 
         void enrol(Reference reference) {

@@ -5,6 +5,10 @@ import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import io.github.armor.core.ArmorCore;
 import io.github.armor.core.command.Catalogue;
+import io.github.armor.core.events.AnswerEvent;
+import io.github.armor.core.events.ChangeEvent;
+import io.github.armor.core.events.CoreEvent;
+import io.github.armor.core.events.Subscriptions;
 import java.io.EOFException;
 import java.io.IOException;
 import java.net.StandardProtocolFamily;
@@ -15,10 +19,15 @@ import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Consumer;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -30,6 +39,19 @@ import org.slf4j.LoggerFactory;
  * <p>Requests: {@code {"id", "op": "directive", "directive": {...}}},
  * {@code {"id", "op": "list", "directives": [...]}}, {@code {"id", "op": "ping"}}, and the read-only
  * {@code {"id", "op": "catalogue"}}, answered {@code {"id", "catalogue": {...}}} (see {@link Catalogue}).
+ *
+ * <p>Events: the core also sends every connection frames nobody asked for, without an {@code id}
+ * and with an {@code "event"} key: {@code "change"} for each acknowledged change of a reference
+ * ({@link ChangeEvent}), in revision order per reference, and {@code "answer"} for what changed in
+ * a subscription's answer ({@link AnswerEvent}).
+ *
+ * <p>Subscriptions ({@link Subscriptions}): {@code {"id", "op": "subscribe", "subscription": ID,
+ * "directive": {...}[, "known": [...]]}} registers a standing query under the client's ID and is
+ * answered {@code {"id", "response": {...}, "revision": n}}: the query's first answer (a failed
+ * one registered nothing), whose "answer" event has already been sent. {@code {"id", "op":
+ * "unsubscribe", "subscription": ID}} is answered {@code {"id", "unsubscribed": bool}};
+ * {@code {"id", "op": "subscriptions"}} {@code {"id", "subscriptions": count}}. A connection's
+ * subscriptions end when it closes.
  */
 public final class CoreServer {
     private static final Logger LOG = LoggerFactory.getLogger(CoreServer.class);
@@ -63,11 +85,23 @@ public final class CoreServer {
 
     private void serveConnection(SocketChannel connection) {
         Object writeLock = new Object();
+        Consumer<CoreEvent> pushEvent = event -> {
+            String frame = event.toJson().toString();
+            try {
+                synchronized (writeLock) {
+                    writeFrame(connection, frame);
+                }
+            } catch (IOException e) {
+                LOG.debug("could not send an event: {}", e.toString());
+            }
+        };
+        core.events().addListener(pushEvent);
+        Set<String> subscribed = ConcurrentHashMap.newKeySet();
         try (connection) {
             while (true) {
                 JsonObject request = JsonParser.parseString(readFrame(connection)).getAsJsonObject();
                 workers.execute(() -> {
-                    JsonObject reply = answer(request);
+                    JsonObject reply = answer(request, subscribed);
                     try {
                         synchronized (writeLock) {
                             writeFrame(connection, reply.toString());
@@ -81,10 +115,13 @@ public final class CoreServer {
             LOG.debug("client disconnected");
         } catch (IOException | RuntimeException e) {
             LOG.warn("connection closed: {}", e.toString());
+        } finally {
+            core.events().removeListener(pushEvent);
+            subscribed.forEach(core.subscriptions()::unsubscribe);
         }
     }
 
-    private JsonObject answer(JsonObject request) {
+    private JsonObject answer(JsonObject request, Set<String> subscribed) {
         JsonObject reply = new JsonObject();
         reply.add("id", request.get("id"));
         String op = request.has("op") ? request.get("op").getAsString() : "";
@@ -96,6 +133,13 @@ public final class CoreServer {
                         WireCodec.listResponse(core.executeList(WireCodec.directives(request.getAsJsonArray("directives")))));
                 case "ping" -> reply.addProperty("pong", true);
                 case "catalogue" -> reply.add("catalogue", catalogue);
+                case "subscribe" -> subscribe(request, reply, subscribed);
+                case "unsubscribe" -> {
+                    String subscription = request.get("subscription").getAsString();
+                    subscribed.remove(subscription);
+                    reply.addProperty("unsubscribed", core.subscriptions().unsubscribe(subscription));
+                }
+                case "subscriptions" -> reply.addProperty("subscriptions", core.subscriptions().count());
                 default -> reply.addProperty("error", "unknown op '" + op + "'");
             }
         } catch (RuntimeException | LinkageError | StackOverflowError e) {
@@ -104,6 +148,25 @@ public final class CoreServer {
             reply.addProperty("error", "request failed in the core: " + e);
         }
         return reply;
+    }
+
+    private void subscribe(JsonObject request, JsonObject reply, Set<String> subscribed) {
+        String id = request.get("subscription").getAsString();
+        List<String> known = null;
+        if (request.has("known") && request.get("known").isJsonArray()) {
+            known = new ArrayList<>();
+            for (var answer : request.getAsJsonArray("known")) {
+                known.add(answer.getAsString());
+            }
+        }
+        subscribed.add(id);
+        Subscriptions.Evaluation first = core.subscriptions().subscribe(id,
+                WireCodec.directive(request.getAsJsonObject("directive")), known);
+        if (!first.response().success() || first.response().timeout()) {
+            subscribed.remove(id);
+        }
+        reply.add("response", WireCodec.response(first.response()));
+        reply.addProperty("revision", first.revision());
     }
 
     private static String readFrame(SocketChannel channel) throws IOException {
