@@ -152,7 +152,7 @@ public final class ArmorCore implements AutoCloseable {
                 throw new ArmorException(ExitCode.NO_REFERENCE_NAME, "no reference name given for "
                         + query.describe());
             }
-            spec.checkArity(query.args().size());
+            spec.checkArity(query.args());
             Reference target = references.get(query.referenceName());
             CommandContext context = context(query, target);
             Response underLock = target.locked(config.lockWaitMs(), reference -> {
