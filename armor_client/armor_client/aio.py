@@ -152,17 +152,6 @@ class AsyncArmor(Awaiting, SessionBase[AsyncReference]):
         """
         return AsyncChanges(self.transport, reference)
 
-    def changes(self, reference: Optional[str] = None) -> AsyncChanges:
-        """Every acknowledged change the node publishes, as an async iterator of Change.
-
-        Args:
-            reference: only this reference's changes (None: every reference's).
-
-        Returns:
-            AsyncChanges: ``async with armor.changes() as changes: async for change in ...``.
-        """
-        return AsyncChanges(self.transport, reference)
-
     async def close(self) -> None:
         """Release the worker threads and the transport (when this object created it)."""
         self._pool.shutdown(wait=True)
