@@ -8,6 +8,9 @@ Reads one JSON request per line on stdin and answers one JSON line on stdout:
       a method of Armor (reference null) or of Reference, as a program would call it;
   {"op": "batch", "reference": "fleet", "changes": [["add_individual", [...]], ...]}
       the changes sent as one atomic list;
+  {"op": "watch", "reference": "fleet", "query": "QUERY IND CLASS OccupiedRoom"}
+      subscribe to a query's answer and to the reference's change topic, keeping what arrives;
+  {"op": "heard"}  what the watches received so far: answer changes and change events;
 and answers {"value": ...} or {"error": "ArmorMountError", "exit_code": 102, "description":
 "..."}, with "seconds" (the call's round trip) in both. One handler per op (OPS): a new kind
 of request, such as a subscription to change events, is one more function there.
@@ -16,7 +19,7 @@ of request, such as a subscription to change events, is one more function there.
 import json
 import sys
 import time
-from typing import Any, Callable, Dict
+from typing import Any, Callable, Dict, List
 
 from armor_client import Armor, ArmorError
 
@@ -33,7 +36,26 @@ def batch(armor: Armor, request: Dict[str, Any]) -> Any:
     return changes.consistent
 
 
-OPS: Dict[str, Callable[[Armor, Dict[str, Any]], Any]] = {'call': call, 'batch': batch}
+HEARD: Dict[str, List[Any]] = {'answers': [], 'changes': []}
+WATCHES: List[Any] = []
+
+
+def watch(armor: Armor, request: Dict[str, Any]) -> Any:
+    reference = armor.reference(request['reference'])
+    WATCHES.append(armor.changes(lambda change: HEARD['changes'].append(
+        [change.revision, change.client, [d.command for d in change.directives],
+         list(change.missed)]), reference=request['reference']))
+    WATCHES.append(reference.subscribe(request['query'], lambda change: HEARD['answers'].append(
+        [change.revision, sorted(change.added), sorted(change.removed), change.missed])))
+    return WATCHES[-1].answer
+
+
+def heard(armor: Armor, request: Dict[str, Any]) -> Any:
+    return HEARD
+
+
+OPS: Dict[str, Callable[[Armor, Dict[str, Any]], Any]] = {
+    'call': call, 'batch': batch, 'watch': watch, 'heard': heard}
 
 
 def answer(armor: Armor, request: Dict[str, Any]) -> Dict[str, Any]:
@@ -41,7 +63,7 @@ def answer(armor: Armor, request: Dict[str, Any]) -> Dict[str, Any]:
     try:
         value = OPS[request['op']](armor, request)
         reply: Dict[str, Any] = {'value': value if value is None or isinstance(
-            value, (bool, int, float, str, list)) else repr(value)}
+            value, (bool, int, float, str, list, dict)) else repr(value)}
     except ArmorError as error:
         reply = {'error': type(error).__name__, 'exit_code': error.exit_code,
                  'description': error.description}

@@ -157,6 +157,30 @@ def test_an_atomic_list_from_one_host_is_all_or_nothing_on_another(fleet):
     assert 'dave' not in fleet.robot1.call('instances', 'Person')
 
 
+def test_change_events_and_inferred_answers_reach_another_host(fleet):
+    """robot2 watches; robot1, on another host, moves a person: robot2 hears the change and
+    the room the reasoner now infers occupied, with the revision both hold at."""
+    fleet.robot2.call('replace_object_value', 'isIn', 'alice', 'corridor1',
+                      fleet.robot2.call('object_values', 'isIn', 'alice')[0])
+    watched = fleet.robot2.request(op='watch', reference='fleet',
+                                   query='QUERY IND CLASS OccupiedRoom')
+    assert watched.get('value') == ['kitchen'], watched
+    fleet.robot1.call('replace_object_value', 'isIn', 'alice', 'bedroom', 'corridor1')
+    revision = None
+    deadline = time.monotonic() + 30
+    while time.monotonic() < deadline:
+        heard = fleet.robot2.request(op='heard')['value']
+        moves = [c for c in heard['changes'] if c[1] == 'robot1_planner' and c[2] == ['REPLACE']]
+        appeared = [a for a in heard['answers'] if a[1] == ['bedroom']]
+        if moves and appeared:
+            revision = moves[-1][0]
+            break
+        time.sleep(0.2)
+    assert revision is not None, heard
+    assert appeared[-1][0] == revision and appeared[-1][2] == [] and appeared[-1][3] == 0
+    assert all(not c[3] for c in heard['changes']), heard   # no missed revisions
+
+
 def test_a_mount_taken_on_one_host_keeps_the_other_out(fleet):
     fleet.robot1.call('mount')
     refused = fleet.robot2.refused('add_individual_to_class', 'intruder', 'Person')
