@@ -8,10 +8,9 @@ import io.github.armor.core.api.Response;
 import io.github.armor.core.api.Response.QueryItem;
 import io.github.armor.core.api.SizeLimits;
 import io.github.armor.core.reference.Reference;
-import java.io.ByteArrayInputStream;
-import java.io.ByteArrayOutputStream;
 import java.util.ArrayList;
 import java.util.List;
+import org.apache.jena.graph.Graph;
 import org.apache.jena.query.Query;
 import org.apache.jena.query.QueryCancelledException;
 import org.apache.jena.query.QueryExecution;
@@ -21,24 +20,22 @@ import org.apache.jena.query.QueryParseException;
 import org.apache.jena.query.QuerySolution;
 import org.apache.jena.query.ResultSet;
 import org.apache.jena.rdf.model.Literal;
-import org.apache.jena.rdf.model.Model;
 import org.apache.jena.rdf.model.ModelFactory;
 import org.apache.jena.rdf.model.RDFNode;
 import org.apache.jena.shared.PrefixMapping;
 import org.apache.jena.sparql.engine.http.Service;
-import org.semanticweb.owlapi.formats.NTriplesDocumentFormat;
 import org.semanticweb.owlapi.model.IRI;
-import org.semanticweb.owlapi.model.OWLOntology;
-import org.semanticweb.owlapi.model.OWLOntologyStorageException;
 
 /**
  * QUERY SPARQL with Apache Jena ARQ over the ontology plus its inferences (class and property
  * assertions, hierarchy), so that answers agree with the other queries. The reference's
  * declared prefixes are predefined in every query.
  *
- * <p>Two phases: under the reference's lock, the query is parsed and checked and the graph is
- * built (the reasoner's part); the graph is a private copy, so the query is evaluated after the
- * lock is released, within the time limit (node parameter sparql_timeout_ms).
+ * <p>Two phases: under the reference's lock, the query is parsed and checked and the reference's
+ * graph for its current state is taken ({@link SparqlGraphs}: made by the first query after a
+ * change, shared by the next ones); the graph is never changed, so the query is evaluated after
+ * the lock is released, in parallel with other queries, within the time limit (node parameter
+ * sparql_timeout_ms).
  */
 final class Sparql {
     private Sparql() {}
@@ -66,12 +63,12 @@ final class Sparql {
                     + " to allow it");
         }
         long limitMs = timeLimit(requestedMs, safeguards.sparqlTimeoutMs());
-        // The reasoner's part needs the reference; the graph it yields is a private copy.
-        Model model = model(c.reference());
+        // The reasoner's part needs the reference; the graph it yields is never changed.
+        Graph graph = SparqlGraphs.current(c.reference()).graph();
         boolean consistent = c.reference().isConsistent();
         Rendering rendering = c.render();
         boolean federated = safeguards.sparqlFederated();
-        return c.afterRelease(() -> evaluate(query, model, limitMs, federated, rendering, consistent, formatted));
+        return c.afterRelease(() -> evaluate(query, graph, limitMs, federated, rendering, consistent, formatted));
     }
 
     /**
@@ -85,12 +82,12 @@ final class Sparql {
         return nodeMs;
     }
 
-    private static Response evaluate(Query query, Model model, long limitMs, boolean federated, Rendering rendering,
+    private static Response evaluate(Query query, Graph graph, long limitMs, boolean federated, Rendering rendering,
                                      boolean consistent, boolean formatted) {
         List<List<QueryItem>> rows = new ArrayList<>();
         boolean timedOut = false;
         long answerBytes = 0;
-        try (QueryExecution execution = QueryExecutionFactory.create(query, model)) {
+        try (QueryExecution execution = QueryExecutionFactory.create(query, ModelFactory.createModelForGraph(graph))) {
             // Behind the check above: a SERVICE the check missed fails before connecting.
             execution.getContext().set(Service.serviceAllowed, federated);
             if (limitMs > 0) {
@@ -176,19 +173,6 @@ final class Sparql {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "malformed SPARQL: " + e.getMessage()
                     .replaceAll("\\s+", " ").trim(), e);
         }
-    }
-
-    private static Model model(Reference reference) {
-        OWLOntology inferred = Inferences.withInferences(reference);
-        ByteArrayOutputStream triples = new ByteArrayOutputStream();
-        try {
-            inferred.getOWLOntologyManager().saveOntology(inferred, new NTriplesDocumentFormat(), triples);
-        } catch (OWLOntologyStorageException e) {
-            throw new ArmorException(ExitCode.INTERNAL_ERROR, "could not prepare the SPARQL graph: " + e.getMessage(), e);
-        }
-        Model model = ModelFactory.createDefaultModel();
-        model.read(new ByteArrayInputStream(triples.toByteArray()), null, "N-TRIPLES");
-        return model;
     }
 
     private static String render(Rendering rendering, RDFNode node) {

@@ -72,6 +72,8 @@ public final class Reference {
     private boolean consistent = true;
     private String mountedBy = "";
     private Transaction transaction;
+    // In memory only: derived state (the SPARQL graph) is rebuilt when it moves; read under the lock.
+    private long modificationCount;
 
     /**
      * A reference over an ontology. Plain names take the ontology IRI of the settings (or the
@@ -179,6 +181,15 @@ public final class Reference {
         return consistent;
     }
 
+    /**
+     * How many times the ontology or the reasoner's view of it has changed (enacted changes,
+     * APPLY, rollbacks, reasoner flushes and rebuilds) since the reference was opened. Whatever
+     * is derived from both may be kept while this stays the same.
+     */
+    public long modificationCount() {
+        return modificationCount;
+    }
+
     public String mountedBy() {
         return mountedBy;
     }
@@ -284,6 +295,7 @@ public final class Reference {
             reversed.add(undo.enacted.get(i).reverseChange());
         }
         manager.applyChanges(reversed);
+        modificationCount++;
         removedSinceSync |= reversed.stream().anyMatch(OWLOntologyChange::isRemoveAxiom);
         if (undo.pendingBefore != null) {
             pending.clear();
@@ -301,6 +313,7 @@ public final class Reference {
             return;
         }
         List<OWLOntologyChange> enacted = new ArrayList<>(manager.applyChangesAndGetDetails(changes).getEnactedChanges());
+        modificationCount++;
         removedSinceSync |= enacted.stream().anyMatch(OWLOntologyChange::isRemoveAxiom);
         if (transaction != null) {
             transaction.enacted.addAll(enacted);
@@ -325,6 +338,7 @@ public final class Reference {
      * whose property was not in the ontology when it was created. ELK updates itself correctly.
      */
     private void bringReasonerUpToDate() {
+        modificationCount++;
         if (removedSinceSync && !reasonerName.equals("ELK")) {
             rebuildReasoner();
             return;
@@ -349,6 +363,7 @@ public final class Reference {
             // a reasoner that failed may not dispose cleanly; it is replaced either way
         }
         reasoner = createReasoner();
+        modificationCount++;
         removedSinceSync = false;
     }
 
