@@ -54,6 +54,7 @@ import org.semanticweb.owlapi.util.InferredSubClassAxiomGenerator;
 final class InferredGraph {
     private final long version;
     private final Graph graph;
+    private final JoinOrder joinOrder;
     private final Basis basis;
 
     /**
@@ -65,9 +66,10 @@ final class InferredGraph {
                          Set<Node> propertyNodes, PropertyValueScope scope, Map<Node, Set<Node>> types,
                          boolean typesAnswered, boolean valuesAnswered) {}
 
-    private InferredGraph(long version, Graph graph, Basis basis) {
+    private InferredGraph(long version, Graph graph, JoinOrder joinOrder, Basis basis) {
         this.version = version;
         this.graph = graph;
+        this.joinOrder = joinOrder;
         this.basis = basis;
     }
 
@@ -78,6 +80,11 @@ final class InferredGraph {
     /** The triples; never changed, read by queries outside the reference's lock. */
     Graph graph() {
         return graph;
+    }
+
+    /** The order in which queries on this graph join their patterns. */
+    JoinOrder joinOrder() {
+        return joinOrder;
     }
 
     /** Whether the next state's graph may be derived from this one (else it is built afresh). */
@@ -102,7 +109,7 @@ final class InferredGraph {
                     axioms.stream().map(RdfTerms::assertion).filter(Objects::nonNull).forEach(graph::add);
                 }
             }
-            return new InferredGraph(version, LayeredGraph.prepareForReaders(graph), null);
+            return new InferredGraph(version, LayeredGraph.prepareForReaders(graph), JoinOrder.of(graph), null);
         }
         List<OWLClass> classes = classes(ontology, reference.factory());
         Map<Node, Set<Node>> types = answered(reference, () -> ReasonerAnswers.types(reasoner, ontology, classes));
@@ -121,7 +128,7 @@ final class InferredGraph {
             values.forEach(graph::add);
         }
         Basis basis = derivable(ontology) ? basis(ontology, classes, scope, types, values != null) : null;
-        return new InferredGraph(version, LayeredGraph.prepareForReaders(graph), basis);
+        return new InferredGraph(version, LayeredGraph.prepareForReaders(graph), JoinOrder.of(graph), basis);
     }
 
     /**
@@ -213,7 +220,7 @@ final class InferredGraph {
         }
         Basis next = new Basis(basis.classes(), basis.classNodes(), basis.schema(), basis.propertyNodes(),
                 basis.scope(), types, basis.typesAnswered(), basis.valuesAnswered());
-        return new InferredGraph(newVersion, LayeredGraph.apply(graph, additions, removals), next);
+        return new InferredGraph(newVersion, LayeredGraph.apply(graph, additions, removals), joinOrder, next);
     }
 
     private enum AssertionKind { TYPE, VALUE }
