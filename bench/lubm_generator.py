@@ -141,11 +141,13 @@ class Department:
             out.append(f'</ub:{kind}>')
         for student, course in self.teaching_assistants.items():
             out += [f'<ub:TeachingAssistant rdf:about="{student}">',
-                    f'   <ub:teachingAssistantOf rdf:resource="{course}" />', '</ub:TeachingAssistant>']
+                    f'   <ub:teachingAssistantOf rdf:resource="{course}" />',
+                    '</ub:TeachingAssistant>']
         out += [f'<ub:ResearchAssistant rdf:about="{s}" />' for s in self.research_assistants]
         for group in self.research_groups:
             out += [f'<ub:ResearchGroup rdf:about="{group}">',
-                    f'   <ub:subOrganizationOf rdf:resource="{self.iri}" />', '</ub:ResearchGroup>']
+                    f'   <ub:subOrganizationOf rdf:resource="{self.iri}" />',
+                    '</ub:ResearchGroup>']
         for publication, authors in self.publications.items():
             out += [f'<ub:Publication rdf:about="{publication}">',
                     f'   <ub:name>{name(publication)}</ub:name>']
@@ -193,7 +195,8 @@ def expected_rows(departments: List[Department]) -> Dict[int, int]:
         6: len(students),
         7: sum(course in takes[s] for s in students for course in teaches.get(associate0, [])),
         8: len(students),
-        9: sum(course in teaches[advisor[s]] for s in students if s in advisor for course in takes[s]),
+        9: sum(course in teaches[advisor[s]]
+               for s in students if s in advisor for course in takes[s]),
         10: taking_gc0,
         11: sum(len(d.research_groups) for d in departments),
         12: len(departments),

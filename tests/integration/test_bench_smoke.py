@@ -46,7 +46,8 @@ def test_smoke_run_writes_every_section_with_figures(tmp_path):
         assert FIGURE.search(text), f'no figure in section {heading}:\n{text[:1500]}'
     summary = _sections(report)['## Summary']
     for benchmark in ('1. transport', '2. batch', '3. reasoning cycle', '4. peak memory',
-                      '6. LUBM 14-query mean over ROS 2', '6. first query after a one-fact change'):
+                      '6. LUBM 14-query mean over ROS 2',
+                      '6. first query after a one-fact change'):
         assert benchmark in summary, f'{benchmark} missing from the summary'
     assert '**Slowest part of the service:**' in summary
     assert '**Default for the robot\'s cycle:**' in summary
