@@ -17,6 +17,7 @@ import java.util.function.Supplier;
 import java.util.stream.Stream;
 import org.apache.jena.graph.Graph;
 import org.apache.jena.graph.Node;
+import org.apache.jena.graph.NodeFactory;
 import org.apache.jena.graph.Triple;
 import org.apache.jena.sparql.graph.GraphFactory;
 import org.semanticweb.owlapi.apibinding.OWLManager;
@@ -59,12 +60,13 @@ final class InferredGraph {
 
     /**
      * How the graph was made, for deriving the next one: the ontology's classes and properties
-     * (an assertion that adds or drops one forces a fresh build), every individual's inferred
-     * types, and which questions the reasoner answered. Null when the next graph is built afresh.
+     * (an assertion that adds or drops one forces a fresh build), its individuals and the
+     * inferred instances of each class (IRIs), and which questions the reasoner answered. Null
+     * when the next graph is built afresh.
      */
     private record Basis(List<OWLClass> classes, Set<Node> classNodes, Set<OWLEntity> schema,
-                         Set<Node> propertyNodes, PropertyValueScope scope, Map<Node, Set<Node>> types,
-                         boolean typesAnswered, boolean valuesAnswered) {}
+                         Set<Node> propertyNodes, PropertyValueScope scope, Set<String> individuals,
+                         Map<OWLClass, Set<String>> instances, boolean typesAnswered, boolean valuesAnswered) {}
 
     private InferredGraph(long version, Graph graph, JoinOrder joinOrder, Basis basis) {
         this.version = version;
@@ -112,13 +114,22 @@ final class InferredGraph {
             return new InferredGraph(version, LayeredGraph.prepareForReaders(graph), JoinOrder.of(graph), null);
         }
         List<OWLClass> classes = classes(ontology, reference.factory());
-        Map<Node, Set<Node>> types = answered(reference, () -> ReasonerAnswers.types(reasoner, ontology, classes));
-        if (types != null) {
-            types.forEach((individual, classesOf) -> classesOf.forEach(c -> graph.add(
-                    Triple.create(individual, RdfTerms.TYPE, c))));
+        List<OWLNamedIndividual> individuals = ontology.individualsInSignature(Imports.INCLUDED).toList();
+        Set<String> names = new HashSet<>();
+        individuals.forEach(i -> names.add(i.getIRI().toString()));
+        Map<OWLClass, Set<String>> instances = answered(reference,
+                () -> ReasonerAnswers.instances(reasoner, classes, names));
+        if (instances != null) {
+            Node thing = RdfTerms.entity(reference.factory().getOWLThing());
+            // Every individual is a Thing, also one the reasoner has not met (HermiT omits
+            // individuals that are only declared from the instances of owl:Thing).
+            names.forEach(name -> graph.add(Triple.create(NodeFactory.createURI(name), RdfTerms.TYPE, thing)));
+            instances.forEach((owlClass, members) -> {
+                Node type = RdfTerms.entity(owlClass);
+                members.forEach(name -> graph.add(Triple.create(NodeFactory.createURI(name), RdfTerms.TYPE, type)));
+            });
         }
         PropertyValueScope scope = PropertyValueScope.of(ontology);
-        List<OWLNamedIndividual> individuals = ontology.individualsInSignature(Imports.INCLUDED).toList();
         List<Triple> values = answered(reference, () -> {
             List<Triple> found = new ArrayList<>();
             ReasonerAnswers.values(reasoner, ontology, scope, individuals, found::add);
@@ -127,7 +138,8 @@ final class InferredGraph {
         if (values != null) {
             values.forEach(graph::add);
         }
-        Basis basis = derivable(ontology) ? basis(ontology, classes, scope, types, values != null) : null;
+        Basis basis = derivable(ontology)
+                ? basis(ontology, classes, scope, names, instances, values != null) : null;
         return new InferredGraph(version, LayeredGraph.prepareForReaders(graph), JoinOrder.of(graph), basis);
     }
 
@@ -167,25 +179,43 @@ final class InferredGraph {
         }
         List<Triple> additions = new ArrayList<>();
         List<Triple> removals = new ArrayList<>();
-        Set<Node> touched = new LinkedHashSet<>();
-        mentioned.forEach(i -> touched.add(RdfTerms.entity(i)));
-        Map<Node, Set<Node>> types = basis.types();
+        Set<String> individuals = new HashSet<>(basis.individuals());
+        Set<String> touched = new LinkedHashSet<>();
+        for (OWLNamedIndividual individual : mentioned) {
+            String name = individual.getIRI().toString();
+            touched.add(name);
+            if (ontology.containsEntityInSignature(individual, Imports.INCLUDED)) {
+                individuals.add(name);
+            } else {
+                individuals.remove(name);
+            }
+        }
+        Map<OWLClass, Set<String>> instances = basis.instances();
         if (basis.typesAnswered()) {
-            types = answered(reference, () -> ReasonerAnswers.types(reasoner, ontology, basis.classes()));
-            if (types == null) {
+            instances = answered(reference, () -> ReasonerAnswers.instances(reasoner, basis.classes(), individuals));
+            if (instances == null) {
                 return null;
             }
-            for (Node individual : union(basis.types().keySet(), types.keySet())) {
-                if (!Objects.equals(basis.types().get(individual), types.get(individual))) {
-                    touched.add(individual);
+            for (Map.Entry<OWLClass, Set<String>> members : instances.entrySet()) {
+                Set<String> before = basis.instances().getOrDefault(members.getKey(), Set.of());
+                if (!before.equals(members.getValue())) {
+                    before.stream().filter(name -> !members.getValue().contains(name)).forEach(touched::add);
+                    members.getValue().stream().filter(name -> !before.contains(name)).forEach(touched::add);
                 }
             }
         }
         OWLDataFactory factory = reference.factory();
-        for (Node individual : touched) {
+        for (String name : touched) {
+            Node individual = NodeFactory.createURI(name);
             Set<Triple> wanted = new HashSet<>();
-            types.getOrDefault(individual, Set.of()).forEach(c -> wanted.add(Triple.create(individual, RdfTerms.TYPE, c)));
-            asserted(ontology, individualOf(factory, individual), AssertionKind.TYPE).forEach(wanted::add);
+            if (basis.typesAnswered()) {
+                for (OWLClass owlClass : basis.classes()) {
+                    if (owlClass.isOWLThing() ? individuals.contains(name) : instances.get(owlClass).contains(name)) {
+                        wanted.add(Triple.create(individual, RdfTerms.TYPE, RdfTerms.entity(owlClass)));
+                    }
+                }
+            }
+            asserted(ontology, factory.getOWLNamedIndividual(IRI.create(name)), AssertionKind.TYPE).forEach(wanted::add);
             reconcile(graph.find(individual, RdfTerms.TYPE, Node.ANY)
                     .filterKeep(t -> basis.classNodes().contains(t.getObject())).toSet(), wanted, additions, removals);
         }
@@ -219,7 +249,7 @@ final class InferredGraph {
             }
         }
         Basis next = new Basis(basis.classes(), basis.classNodes(), basis.schema(), basis.propertyNodes(),
-                basis.scope(), types, basis.typesAnswered(), basis.valuesAnswered());
+                basis.scope(), individuals, instances, basis.typesAnswered(), basis.valuesAnswered());
         return new InferredGraph(newVersion, LayeredGraph.apply(graph, additions, removals), joinOrder, next);
     }
 
@@ -230,10 +260,6 @@ final class InferredGraph {
         return ontology.importsClosure().flatMap(o -> kind == AssertionKind.TYPE ? o.classAssertionAxioms(individual)
                         : Stream.concat(o.objectPropertyAssertionAxioms(individual), o.dataPropertyAssertionAxioms(individual)))
                 .map(RdfTerms::assertion).filter(Objects::nonNull);
-    }
-
-    private static OWLNamedIndividual individualOf(OWLDataFactory factory, Node node) {
-        return factory.getOWLNamedIndividual(IRI.create(node.getURI()));
     }
 
     private static void reconcile(Set<Triple> present, Set<Triple> wanted, List<Triple> additions,
@@ -268,7 +294,8 @@ final class InferredGraph {
     }
 
     private static Basis basis(OWLOntology ontology, List<OWLClass> classes, PropertyValueScope scope,
-                               Map<Node, Set<Node>> types, boolean valuesAnswered) {
+                               Set<String> individuals, Map<OWLClass, Set<String>> instances,
+                               boolean valuesAnswered) {
         Set<Node> classNodes = new HashSet<>();
         classes.forEach(c -> classNodes.add(RdfTerms.entity(c)));
         Set<OWLEntity> schema = new HashSet<>(classes);
@@ -279,8 +306,8 @@ final class InferredGraph {
                 propertyNodes.add(RdfTerms.entity(e));
             }
         });
-        return new Basis(classes, classNodes, schema, propertyNodes, scope, types == null ? Map.of() : types,
-                types != null, valuesAnswered);
+        return new Basis(classes, classNodes, schema, propertyNodes, scope, individuals,
+                instances == null ? Map.of() : instances, instances != null, valuesAnswered);
     }
 
     /** The ontology's classes and owl:Thing: the types every individual is asked about. */

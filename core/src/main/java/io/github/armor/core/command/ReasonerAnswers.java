@@ -8,20 +8,17 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Consumer;
-import java.util.stream.Collectors;
 import openllet.aterm.ATermAppl;
 import openllet.core.KnowledgeBase;
 import openllet.core.utils.ATermUtils;
 import openllet.owlapi.PelletReasoner;
 import org.apache.jena.graph.Node;
-import org.apache.jena.graph.NodeFactory;
 import org.apache.jena.graph.Triple;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLDataProperty;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLObjectProperty;
 import org.semanticweb.owlapi.model.OWLOntology;
-import org.semanticweb.owlapi.model.parameters.Imports;
 import org.semanticweb.owlapi.reasoner.InferenceType;
 import org.semanticweb.owlapi.reasoner.OWLReasoner;
 
@@ -34,33 +31,28 @@ final class ReasonerAnswers {
     private ReasonerAnswers() {}
 
     /**
-     * The individuals of the ontology, each with the named classes among {@code classes} it
-     * belongs to. One question per class, not per individual. Openllet's answers are read from its
-     * realised knowledge base: its OWL API wrapper turns every answer into OWL API objects, which
-     * takes about a hundred times as long as the lookup (50 ms against 0.5 ms on one LUBM
-     * department).
+     * The named instances of each of {@code classes} (owl:Thing aside: every individual is one),
+     * as IRIs, among {@code individuals}. One question per class, not per individual. Openllet's
+     * answers are read from its realised knowledge base: its OWL API wrapper turns every answer
+     * into OWL API objects, which takes about a hundred times as long as the lookup (50 ms against
+     * 0.5 ms on one LUBM department).
      */
-    static Map<Node, Set<Node>> types(OWLReasoner reasoner, OWLOntology ontology, List<OWLClass> classes) {
-        Set<String> individuals = ontology.individualsInSignature(Imports.INCLUDED)
-                .map(i -> i.getIRI().toString()).collect(Collectors.toSet());
-        Map<String, Set<Node>> byName = new HashMap<>();
+    static Map<OWLClass, Set<String>> instances(OWLReasoner reasoner, List<OWLClass> classes,
+                                               Set<String> individuals) {
+        Map<OWLClass, Set<String>> instances = new HashMap<>();
         for (OWLClass owlClass : classes) {
-            Node type = RdfTerms.entity(owlClass);
             if (owlClass.isOWLThing()) {
-                // Every individual is a Thing, also one the reasoner has not met (HermiT omits
-                // individuals that are only declared from the instances of owl:Thing).
-                individuals.forEach(name -> byName.computeIfAbsent(name, n -> new HashSet<>()).add(type));
                 continue;
             }
+            Set<String> members = new HashSet<>();
             for (String instance : instances(reasoner, owlClass)) {
                 if (individuals.contains(instance)) {
-                    byName.computeIfAbsent(instance, name -> new HashSet<>()).add(type);
+                    members.add(instance);
                 }
             }
+            instances.put(owlClass, members);
         }
-        Map<Node, Set<Node>> types = new HashMap<>();
-        byName.forEach((name, classesOf) -> types.put(NodeFactory.createURI(name), classesOf));
-        return types;
+        return instances;
     }
 
     private static Collection<String> instances(OWLReasoner reasoner, OWLClass owlClass) {

@@ -48,6 +48,8 @@ import org.semanticweb.owlapi.model.RemoveAxiom;
 class InferredGraphTest {
     private static final Path ROBOTICS = Path.of("..", "ontologies", "robotics.owl").toAbsolutePath().normalize();
     private static final String NS = "http://www.example.org/robotics#";
+    private static final Path LUBM = Path.of("..", "bench", "data", "lubm", "university0-department0.owl")
+            .toAbsolutePath().normalize();
 
     private final OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
     private final OWLDataFactory factory = manager.getOWLDataFactory();
@@ -199,6 +201,28 @@ class InferredGraphTest {
                 NodeFactory.createURI(NS + "house")), "transitivity");
         assertTrue(graph.contains(NodeFactory.createURI(NS + "bob"), RdfTerms.entity(poweredBy),
                 NodeFactory.createURI(NS + "battery1")), "value restriction");
+    }
+
+    /** One LUBM department: Openllet's knowledge base read directly, values asked only where they can be. */
+    @Test
+    void lubmDepartmentGraphHoldsTheOntologyWithItsInferences() throws Exception {
+        String ub = "http://swat.cse.lehigh.edu/onto/univ-bench.owl#";
+        String department = "http://www.Department0.University0.edu";
+        OWLOntology ontology = manager.loadOntologyFromOntologyDocument(new File(LUBM.toString()));
+        Reference reference = open(ontology, "PELLET", false);
+        reference.reason();
+        assertSameTriples(savedWithInferences(reference), SparqlGraphs.current(reference).graph(), "after REASON");
+        reference.change(List.of(
+                new AddAxiom(ontology, factory.getOWLObjectPropertyAssertionAxiom(
+                        factory.getOWLObjectProperty(IRI.create(ub + "takesCourse")),
+                        factory.getOWLNamedIndividual(IRI.create(department + "/UndergraduateStudent7")),
+                        factory.getOWLNamedIndividual(IRI.create(department + "/GraduateCourse0")))),
+                new AddAxiom(ontology, factory.getOWLClassAssertionAxiom(
+                        factory.getOWLClass(IRI.create(ub + "Chair")),
+                        factory.getOWLNamedIndividual(IRI.create(department + "/AssociateProfessor3"))))));
+        Graph derived = SparqlGraphs.current(reference).graph();
+        assertInstanceOf(LayeredGraph.class, derived);
+        assertSameTriples(savedWithInferences(reference), derived, "after two assertions");
     }
 
     @Test
