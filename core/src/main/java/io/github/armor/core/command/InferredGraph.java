@@ -111,7 +111,7 @@ final class InferredGraph {
                     axioms.stream().map(RdfTerms::assertion).filter(Objects::nonNull).forEach(graph::add);
                 }
             }
-            return new InferredGraph(version, LayeredGraph.prepareForReaders(graph), JoinOrder.of(graph), null);
+            return fresh(version, graph, null);
         }
         List<OWLClass> classes = classes(ontology, reference.factory());
         List<OWLNamedIndividual> individuals = ontology.individualsInSignature(Imports.INCLUDED).toList();
@@ -140,7 +140,12 @@ final class InferredGraph {
         }
         Basis basis = derivable(ontology)
                 ? basis(ontology, classes, scope, names, instances, values != null) : null;
-        return new InferredGraph(version, LayeredGraph.prepareForReaders(graph), JoinOrder.of(graph), basis);
+        return fresh(version, graph, basis);
+    }
+
+    private static InferredGraph fresh(long version, Graph triples, Basis basis) {
+        IndexedGraph graph = IndexedGraph.copyOf(triples);
+        return new InferredGraph(version, graph, JoinOrder.of(graph), basis);
     }
 
     /**

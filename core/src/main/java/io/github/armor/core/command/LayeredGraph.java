@@ -65,7 +65,7 @@ final class LayeredGraph extends GraphBase {
         if (added.size() + hidden.size() > Math.max(MIN_FOLD_SIZE, base.size() / FOLD_DIVISOR)) {
             Graph folded = GraphFactory.createGraphMem();
             GraphUtil.addInto(folded, new LayeredGraph(base, added, hidden));
-            return prepareForReaders(folded);
+            return IndexedGraph.copyOf(folded);
         }
         return new LayeredGraph(base, prepareForReaders(added), Set.copyOf(hidden));
     }

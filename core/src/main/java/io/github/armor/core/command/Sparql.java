@@ -83,11 +83,10 @@ final class Sparql {
         return nodeMs;
     }
 
-    private static Response evaluate(Query query, InferredGraph graph, long limitMs, boolean federated, Rendering rendering,
-                                     boolean consistent, boolean formatted) {
-        List<List<QueryItem>> rows = new ArrayList<>();
+    private static Response evaluate(Query query, InferredGraph graph, long limitMs, boolean federated,
+                                     Rendering rendering, boolean consistent, boolean formatted) {
+        Rows rows = new Rows(formatted);
         boolean timedOut = false;
-        long answerBytes = 0;
         try (QueryExecution execution = QueryExecutionFactory.create(query,
                 ModelFactory.createModelForGraph(graph.graph()))) {
             // Behind the check above: a SERVICE the check missed fails before connecting.
@@ -97,52 +96,74 @@ final class Sparql {
                 execution.setTimeout(limitMs);
             }
             if (query.isAskType()) {
-                rows.add(List.of(new QueryItem("ASK", String.valueOf(execution.execAsk()))));
+                rows.add(List.of("ASK"), new String[] {String.valueOf(execution.execAsk())});
             } else {
                 ResultSet results = execution.execSelect();
                 List<String> variables = results.getResultVars();
-                List<Var> vars = variables.stream().map(Var::alloc).toList();
+                Var[] vars = variables.stream().map(Var::alloc).toArray(Var[]::new);
+                String[] values = new String[vars.length];
                 while (results.hasNext()) {
                     // Bindings of graph nodes: a QuerySolution would wrap each value in a model resource first.
                     Binding solution = results.nextBinding();
-                    List<QueryItem> row = new ArrayList<>(variables.size());
-                    for (int i = 0; i < variables.size(); i++) {
-                        String variable = variables.get(i);
-                        Node node = solution.get(vars.get(i));
-                        String value = node == null ? "" : render(rendering, node);
-                        answerBytes += variable.length() + SizeLimits.utf8Bytes(value);
-                        row.add(new QueryItem(variable, value));
+                    for (int i = 0; i < vars.length; i++) {
+                        Node node = solution.get(vars[i]);
+                        values[i] = node == null ? "" : render(rendering, node);
                     }
-                    if (answerBytes > SizeLimits.ANSWER_BYTES) {
-                        throw SizeLimits.tooLarge("the answer exceeds " + SizeLimits.size(SizeLimits.ANSWER_BYTES)
-                                + " after " + rows.size() + " rows; narrow the query or add a LIMIT");
-                    }
-                    rows.add(row);
+                    rows.add(variables, values);
                 }
             }
         } catch (QueryCancelledException e) {
             timedOut = true;
         }
-        if (formatted) {
-            List<QueryItem> items = new ArrayList<>();
-            for (List<QueryItem> row : rows) {
-                if (!items.isEmpty()) {
-                    items.add(new QueryItem("", ""));
-                }
-                items.addAll(row);
-            }
-            return Response.okSparql(consistent, items, timedOut);
-        }
-        List<String> lines = rows.stream().map(Sparql::rowText).toList();
-        return Response.ok(consistent, lines).withQueriedObjects(lines, timedOut);
+        return rows.response(consistent, timedOut);
     }
 
-    /** One variable: its value alone; several: {@code name=value} pairs joined by "; ". */
-    private static String rowText(List<QueryItem> row) {
-        if (row.size() == 1) {
-            return row.get(0).value();
+    /**
+     * The rows of an answer as the contract writes them: one string per row (one variable: its
+     * value alone; several: {@code name=value} pairs joined by "; "), or, FORMATTED, key/value
+     * items with an empty item between rows. Refuses an answer past the size limit.
+     */
+    private static final class Rows {
+        private final boolean formatted;
+        private final List<String> lines = new ArrayList<>();
+        private final List<QueryItem> items = new ArrayList<>();
+        private long bytes;
+        private int count;
+
+        Rows(boolean formatted) {
+            this.formatted = formatted;
         }
-        return String.join("; ", row.stream().map(i -> i.key() + "=" + i.value()).toList());
+
+        void add(List<String> variables, String[] values) {
+            StringBuilder line = formatted || variables.size() == 1 ? null : new StringBuilder();
+            if (formatted && count > 0) {
+                items.add(new QueryItem("", ""));
+            }
+            for (int i = 0; i < values.length; i++) {
+                String variable = variables.get(i);
+                bytes += variable.length() + SizeLimits.utf8Bytes(values[i]);
+                if (formatted) {
+                    items.add(new QueryItem(variable, values[i]));
+                } else if (line != null) {
+                    line.append(i == 0 ? "" : "; ").append(variable).append('=').append(values[i]);
+                }
+            }
+            if (bytes > SizeLimits.ANSWER_BYTES) {
+                throw SizeLimits.tooLarge("the answer exceeds " + SizeLimits.size(SizeLimits.ANSWER_BYTES)
+                        + " after " + count + " rows; narrow the query or add a LIMIT");
+            }
+            if (!formatted) {
+                lines.add(line == null ? values[0] : line.toString());
+            }
+            count++;
+        }
+
+        Response response(boolean consistent, boolean timedOut) {
+            if (formatted) {
+                return Response.okSparql(consistent, items, timedOut);
+            }
+            return Response.ok(consistent, List.of()).withQueriedObjects(lines, timedOut);
+        }
     }
 
     private static String joinSplitForm(String prefix, String select, String where) {
