@@ -337,7 +337,9 @@ def _lubm_section(lubm: dict) -> List[str]:
                      f'**{_ms(core["armor_core"]["mean_ms"])}**' if core else '-',
                      f'**{_ms(core["bare_jena"]["mean_ms"])}**' if core else '-'])
         rounds = f'Measured rounds: {service["rounds"]} over ROS 2' + (
-            f', {core["armor_core"]["rounds"]} in the core and on bare Jena' if core else '')
+            f', {core["armor_core"]["rounds"]} in the core and on bare Jena' if core else '') + (
+            f'. The round trip of `ASK {{}}` (nothing to find, one value back), asked after '
+            f'each query over ROS 2: {_ms(service["ask_floor_ms"])} on average')
         out += [f'### 14 queries, {title}', '', f'{rounds}.', '',
                 _table(['query', 'rows', 'over ROS 2', 'in the core', 'bare Jena'], rows), '']
     change, core_change = lubm['service_change'], lubm['in_process']['change']
