@@ -47,10 +47,12 @@ import org.semanticweb.owlapi.util.InferredSubClassAxiomGenerator;
  * hierarchy, and every individual's inferred named types and property values; the same triples
  * as the ontology saved with its inferences (SAVE INFERENCE).
  *
- * <p>Never changed once made, so any number of queries read it at once. The next state's graph
- * is derived from this one when only assertions about named individuals changed (their types
- * are asked again, their property values too where {@link PropertyValueScope} allows), and
- * built afresh otherwise.
+ * <p>Never changed once made, so any number of queries read it at once: a fresh graph is an
+ * {@link IndexedGraph}, a derived one a {@link LayeredGraph} over it. The next state's graph is
+ * derived from this one when only assertions about named individuals changed: every class's
+ * instances are asked again (one question per class) and compared with this graph's, and the
+ * property values of the individuals the changes name are asked again (of every individual
+ * where {@link PropertyValueScope} says values can travel). Anything else builds it afresh.
  */
 final class InferredGraph {
     private final long version;
