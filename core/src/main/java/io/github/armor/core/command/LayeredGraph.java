@@ -67,7 +67,7 @@ final class LayeredGraph extends GraphBase {
             GraphUtil.addInto(folded, new LayeredGraph(base, added, hidden));
             return IndexedGraph.copyOf(folded);
         }
-        return new LayeredGraph(base, prepareForReaders(added), Set.copyOf(hidden));
+        return new LayeredGraph(base, IndexedGraph.copyOf(added), Set.copyOf(hidden));
     }
 
     /**
@@ -88,7 +88,8 @@ final class LayeredGraph extends GraphBase {
         if (!hidden.isEmpty()) {
             found = found.filterDrop(hidden::contains);
         }
-        return added.isEmpty() ? found : found.andThen(added.find(pattern));
+        ExtendedIterator<Triple> more = added.find(pattern);
+        return more.hasNext() ? found.andThen(more) : found;
     }
 
     @Override
