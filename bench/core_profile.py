@@ -65,25 +65,25 @@ def samples(recording: pathlib.Path) -> list:
     return stacks
 
 
-def summarise(stacks: list, top: int = 8) -> dict:
+def summarise(stacks: list, top: int = 8, components: tuple = COMPONENTS) -> dict:
     """Share of samples per component, the hottest top frames, and the hottest ARMOR frames."""
-    components = collections.Counter()
+    counts = collections.Counter()
     leaves = collections.Counter()
     armor_frames = collections.Counter()
     for stack in stacks:
         if not stack:
             continue
         leaves[stack[0]] += 1
-        component = next((name for name, prefixes in COMPONENTS
+        component = next((name for name, prefixes in components
                           if any(frame.startswith(prefixes) for frame in stack)),
                          'outside the directive path (server loop, JIT, class loading)')
-        components[component] += 1
+        counts[component] += 1
         for frame in set(stack):
             if frame.startswith('io.github.armor.core'):
                 armor_frames[frame] += 1
-    total = max(1, sum(components.values()))
-    return {'samples': sum(components.values()),
-            'components': [(name, count / total) for name, count in components.most_common()],
+    total = max(1, sum(counts.values()))
+    return {'samples': sum(counts.values()),
+            'components': [(name, count / total) for name, count in counts.most_common()],
             'top_frames': [(name, count / total) for name, count in leaves.most_common(top)],
             'armor_frames': [(name, count / total)
                              for name, count in armor_frames.most_common(top)]}

@@ -19,9 +19,9 @@ from typing import Dict, List, Optional, Sequence
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 CORE_TARGET = REPO / 'core' / 'target'
-HARNESS_SOURCE = (REPO / 'core' / 'src' / 'test' / 'java' / 'io' / 'github' / 'armor' / 'core'
-                  / 'bench' / 'InProcessBatchBench.java')
 HARNESS_CLASS = 'io.github.armor.core.bench.InProcessBatchBench'
+# Main classes of the in-process benchmarks, compiled with the core's tests.
+HARNESS_CLASSES = (HARNESS_CLASS, 'io.github.armor.core.command.LubmBench')
 
 # Chosen before rclpy starts in this process; children inherit it.
 os.environ.setdefault('ROS_DOMAIN_ID', str(random.SystemRandom().randint(1, 100)))
@@ -59,16 +59,22 @@ class CoreSnapshot:
         self.root = scratch / 'core'
         if not (CORE_TARGET / 'armor-core.jar').is_file():
             raise RuntimeError('core/target/armor-core.jar is missing: run make setup')
-        compiled = CORE_TARGET / 'test-classes' / (HARNESS_CLASS.replace('.', '/') + '.class')
-        if not compiled.is_file() or compiled.stat().st_mtime < HARNESS_SOURCE.stat().st_mtime:
-            # make bench compiles it; this covers a suite started by hand or by the smoke test.
+        classes = CORE_TARGET / 'test-classes'
+        compiled = [classes / (name.replace('.', '/') + '.class') for name in HARNESS_CLASSES]
+        sources = [REPO / 'core' / 'src' / 'test' / 'java' / (name.replace('.', '/') + '.java')
+                   for name in HARNESS_CLASSES]
+        if any(not c.is_file() or c.stat().st_mtime < s.stat().st_mtime
+               for c, s in zip(compiled, sources)):
+            # make bench compiles them; this covers a suite started by hand or by the smoke test.
             subprocess.run(['mvn', '-q', '-o', '-f', str(REPO / 'core' / 'pom.xml'),
                             'test-compile'], check=True)
         self.root.mkdir(parents=True)
         shutil.copy2(CORE_TARGET / 'armor-core.jar', self.root)
         shutil.copytree(CORE_TARGET / 'lib', self.root / 'lib')
-        shutil.copytree(compiled.parent, self.root / 'test-classes' / compiled.parent.relative_to(
-            CORE_TARGET / 'test-classes'))
+        for harness in compiled:
+            package = harness.parent.relative_to(classes)
+            shutil.copytree(harness.parent, self.root / 'test-classes' / package,
+                            dirs_exist_ok=True)
         self.jar = self.root / 'armor-core.jar'
 
     @property

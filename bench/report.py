@@ -2,8 +2,10 @@
 """Turns the suite's results into bench/REPORT.md: a summary, then one table per benchmark."""
 
 import math
+import statistics
 from typing import Dict, List, Optional, Tuple
 
+from harness import percentile
 from reasoning_cycle import MODES, summarise
 
 TRANSPORT_TARGET = 1.5   # service p50 / echo floor p50, at most
@@ -145,6 +147,8 @@ def render(results: dict) -> str:
         rows.append([f'4. peak memory, {largest:,} individuals, {choice[0]}',
                      f'{memory["total"]:,.0f} MiB', f'node {memory["node"]:,.0f} + core '
                      f'{memory["core"]:,.0f} MiB', '-', '-', '-'])
+    if 'lubm' in results:
+        rows += _lubm_summary(results['lubm'])
     out += [_table(['benchmark', 'service', 'reference', 'ratio', 'target', 'met'], rows), '']
     out += [f'**Default for the robot\'s cycle:** '
             + (f'{choice[0]}, {choice[1]} ({why}).' if choice else why),
@@ -259,4 +263,143 @@ def render(results: dict) -> str:
                 _table(['ARMOR frame on the stack', 'share'],
                        [[f'`{name}`', f'{share:.1%}'] for name, share in profile['armor_frames']]),
                 '']
+    if 'lubm' in results:
+        out += _lubm_section(results['lubm'])
     return '\n'.join(out)
+
+
+def _p50(values: List[float]) -> Optional[float]:
+    return statistics.median(values) if values else None
+
+
+def _lubm_summary(lubm: dict) -> List[List[str]]:
+    """The four rows of benchmark 6 in the summary: each figure, its references, its target."""
+    targets, met = lubm['targets_ms'], lubm['met']
+    service, core = lubm['service']['mean_ms'], lubm['in_process']['armor_core']['mean_ms']
+    bare = lubm['in_process']['bare_jena']['mean_ms']
+    first = _p50(lubm['service_change']['first_query_ms'])
+    many = lubm['service_many']['mean_ms']
+    many_core = lubm.get('in_process_many', {}).get('armor_core', {}).get('mean_ms')
+    many_bare = lubm.get('in_process_many', {}).get('bare_jena', {}).get('mean_ms')
+    return [
+        [f'6. LUBM 14-query mean over ROS 2, {lubm["data"]["one"]}, PELLET', _ms(service),
+         f'in the core {_ms(core)}, bare Jena {_ms(bare)}', f'{service / bare:.1f}x bare Jena',
+         f'<= {targets["service"]:g} ms', _met(met['service'])],
+        ['6. LUBM 14-query mean in the core (in-process ArmorCore)', _ms(core),
+         f'bare Jena {_ms(bare)}', f'{core / bare:.2f}x', f'<= {targets["in_process"]:g} ms',
+         _met(met['in_process'])],
+        ['6. first query after a one-fact change, p50, over ROS 2', _ms(first),
+         f'ADD {_ms(_p50(lubm["service_change"]["add_ms"]))}; graph built afresh '
+         f'{_ms(lubm["in_process"]["graph"]["full_build_ms"])}', '-',
+         f'<= {targets["first_after_change"]:g} ms', _met(met['first_after_change'])],
+        [f'6. LUBM 14-query mean over ROS 2, {lubm["data"]["many"]}', _ms(many),
+         f'in the core {_ms(many_core)}, bare Jena {_ms(many_bare)}',
+         f'{many / many_bare:.1f}x bare Jena' if many_bare else '-',
+         f'<= {targets["departments"]:g} ms', _met(met['departments'])],
+    ]
+
+
+def _rows_right(run: Optional[dict]) -> str:
+    if not run:
+        return 'not run at this scale'
+    right = sum(a == b for a, b in zip(run['rows'], run['expected_rows']))
+    return f'{right}/{len(run["rows"])}' + ('' if run['rows_ok'] else ' **(differs)**')
+
+
+def _lubm_section(lubm: dict) -> List[str]:
+    one, many = lubm['data']['one'], lubm['data']['many']
+    out = ['## 6. SPARQL on LUBM', '',
+           'The 14 LUBM queries (bench/data/lubm/queries.json) through `QUERY SPARQL`: over ROS 2 '
+           'from another process (bench/lubm.py), in a separate JVM through `ArmorCore.execute` '
+           '(no socket, no ROS), and with plain Jena ARQ over a plain in-memory copy of the '
+           'same graph, its results read but not rendered (the floor; `LubmBench.java`). Each '
+           'figure is the mean over rounds of the 14 queries after warm-up rounds, the mean of '
+           'the 14 per-query means; every answer\'s row count is checked against the expected '
+           'one on every round. Openllet (PELLET) with a non-buffered reasoner, after REASON. '
+           f'One department: {one}. More departments: {many}; bench/lubm_generator.py writes '
+           'them. A second reasoner (HermiT) answers the same queries once.', '']
+    over_ros = {key: f'{len(lubm[key]["per_query_ms"])}/{len(lubm[key]["per_query_ms"])}'
+                for key in ('service', 'service_many')}  # a wrong row count stops the run
+    out += ['### Answers', '',
+            'Queries whose row count is the expected one.', '',
+            _table(['data', 'PELLET over ROS 2', 'PELLET in the core', 'HERMIT in the core'],
+                   [[one, over_ros['service'], _rows_right(lubm['in_process']),
+                     _rows_right(lubm['second_reasoner'])],
+                    [many, over_ros['service_many'], _rows_right(lubm.get('in_process_many')),
+                     _rows_right(lubm.get('second_reasoner_many'))]]), '']
+    for title, service_key, core_key in ((one, 'service', 'in_process'),
+                                         (many, 'service_many', 'in_process_many')):
+        service, core = lubm[service_key], lubm.get(core_key)
+        queries = range(1, len(service['per_query_ms']) + 1)
+        rows = []
+        for index in queries:
+            rows.append([index, core['rows'][index - 1] if core else '-',
+                         _ms(service['per_query_ms'][index - 1]),
+                         _ms(core['armor_core']['per_query_ms'][index - 1]) if core else '-',
+                         _ms(core['bare_jena']['per_query_ms'][index - 1]) if core else '-'])
+        rows.append(['**mean**', '', f'**{_ms(service["mean_ms"])}**',
+                     f'**{_ms(core["armor_core"]["mean_ms"])}**' if core else '-',
+                     f'**{_ms(core["bare_jena"]["mean_ms"])}**' if core else '-'])
+        rounds = f'Measured rounds: {service["rounds"]} over ROS 2' + (
+            f', {core["armor_core"]["rounds"]} in the core and on bare Jena' if core else '') + (
+            f'. The round trip of `ASK {{}}` (nothing to find, one value back), asked after '
+            f'each query over ROS 2: {_ms(service["ask_floor_ms"])} on average')
+        out += [f'### 14 queries, {title}', '', f'{rounds}.', '',
+                _table(['query', 'rows', 'over ROS 2', 'in the core', 'bare Jena'], rows), '']
+    change, core_change = lubm['service_change'], lubm['in_process']['change']
+    graph = lubm['in_process']['graph']
+    out += ['### The first query after a one-fact change', '',
+            f'ADD IND CLASS of a new graduate student, then query {core_change["query"]} (all '
+            'students: the new one is a Student by inference, so the answer must grow by one, '
+            'and does: checked every time), then the same query again; '
+            f'{change["changes"]} times over ROS 2, {core_change["changes"]} in the core. The '
+            'graph\'s share was measured on a reference beside the core: the reasoner brought up '
+            'to date (what ADD does), Openllet\'s realisation, the derivation of the new graph '
+            'from the last one, against a fresh build.', '',
+            _table(['step', 'p50', 'p90'], [
+                ['ADD, over ROS 2', _ms(_p50(change['add_ms'])),
+                 _ms(_p90(change['add_ms']))],
+                ['first query after it, over ROS 2', _ms(_p50(change['first_query_ms'])),
+                 _ms(_p90(change['first_query_ms']))],
+                ['the query again, over ROS 2', _ms(_p50(change['next_query_ms'])),
+                 _ms(_p90(change['next_query_ms']))],
+                ['ADD, in the core', _ms(_p50(core_change['add_ms'])),
+                 _ms(_p90(core_change['add_ms']))],
+                ['first query after it, in the core', _ms(_p50(core_change['first_query_ms'])),
+                 _ms(_p90(core_change['first_query_ms']))],
+                ['graph: reasoner brought up to date', _ms(_p50(graph['change_ms'])),
+                 _ms(_p90(graph['change_ms']))],
+                ['graph: realisation (Openllet)', _ms(_p50(graph['realise_ms'])),
+                 _ms(_p90(graph['realise_ms']))],
+                ['graph: derived from the last one', _ms(_p50(graph['derive_ms'])),
+                 _ms(_p90(graph['derive_ms']))],
+                [f'graph: built afresh ({graph["triples"]:,} triples), for comparison',
+                 _ms(graph['full_build_ms']),
+                 '-']]), '']
+    loads = []
+    for title, key, core_key in ((one, 'service_load', 'in_process'),
+                                 (many, 'service_many_load', 'in_process_many')):
+        figures, core = lubm[key], lubm.get(core_key)
+        loads.append([title, f'{core["graph"]["triples"]:,}' if core else '-',
+                      _seconds(figures['load_ms'] / 1000), _seconds(figures['reason_ms'] / 1000),
+                      _seconds(figures['first_query_ms'] / 1000),
+                      _seconds(core['graph']['full_build_ms'] / 1000) if core else '-'])
+    out += ['### Loading', '',
+            'Over ROS 2: LOAD FILE (PELLET, non-buffered), REASON, and the first query, which '
+            'builds the graph; in the core, the graph built afresh.', '',
+            _table(['data', 'triples in the graph', 'LOAD', 'REASON', 'first query',
+                    'graph built afresh (core)'], loads), '']
+    for title, profile in lubm.get('profiles', {}).items():
+        out += [f'### Profile where a target is missed: {title}', '',
+                f'{profile["workload"]}; {profile["samples"]:,} samples of the core (JDK Flight '
+                'Recorder, `jcmd JFR.start`/`JFR.stop` around the workload).', '',
+                _table(['component', 'share of samples'],
+                       [[name, f'{share:.1%}'] for name, share in profile['components']]), '',
+                _table(['hottest top frame', 'share'],
+                       [[f'`{name}`', f'{share:.1%}'] for name, share in profile['top_frames']]),
+                '']
+    return out
+
+
+def _p90(values: List[float]) -> Optional[float]:
+    return percentile(values, 0.9) if values else None

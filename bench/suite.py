@@ -4,10 +4,11 @@
     python bench/suite.py [--scale full|smoke] [--report bench/REPORT.md]
 
 `make bench` runs it at full scale (about half an hour on 2 cores) and writes bench/REPORT.md.
-`--scale smoke` runs every benchmark on tiny sizes in about a minute and a half
+`--scale smoke` runs every benchmark on tiny sizes in about two minutes
 (tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set with the
 environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
-(query_latency.py, batch_throughput.py, reasoning_cycle.py, core_profile.py).
+(query_latency.py, batch_throughput.py, reasoning_cycle.py, core_profile.py,
+lubm.py).
 """
 
 import argparse
@@ -24,6 +25,7 @@ import time
 from harness import REPO, SCALES, CoreSnapshot
 import batch_throughput
 import core_profile
+import lubm
 import query_latency
 import reasoning_cycle
 import report
@@ -103,6 +105,8 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
             scratch, snapshot, scratch / f'abox{largest}.owl', largest, reasoner, buffered,
             with_reason, scale.profile_s),
     }
+    stage('6. SPARQL on LUBM')
+    results['lubm'] = lubm.measure(lubm.SCALES[scale_name], scratch, snapshot)
     results['duration_s'] = time.monotonic() - started
     (scratch / 'results.json').write_text(json.dumps(results, indent=2, default=str))
     report_path.write_text(report.render(results) + '\n')

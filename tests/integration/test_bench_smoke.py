@@ -18,7 +18,7 @@ from conftest import release_domain, reserve_domain
 REPO = pathlib.Path(__file__).resolve().parents[2]
 SECTIONS = ('## Summary', '## Machine and versions', '## 1. Transport overhead',
             '## 2. Batch throughput', '## 3. Reasoning under updates', '## 4. Memory',
-            '## 5. Profile')
+            '## 5. Profile', '## 6. SPARQL on LUBM')
 FIGURE = re.compile(r'\|\s*[\d,]+(\.\d+)?\s*(ms|s|/s|MiB|%|x)?\s*\|')
 
 
@@ -46,7 +46,9 @@ def test_smoke_run_writes_every_section_with_figures(tmp_path):
     for heading, text in _sections(report).items():
         assert FIGURE.search(text), f'no figure in section {heading}:\n{text[:1500]}'
     summary = _sections(report)['## Summary']
-    for benchmark in ('1. transport', '2. batch', '3. reasoning cycle', '4. peak memory'):
+    for benchmark in ('1. transport', '2. batch', '3. reasoning cycle', '4. peak memory',
+                      '6. LUBM 14-query mean over ROS 2',
+                      '6. first query after a one-fact change'):
         assert benchmark in summary, f'{benchmark} missing from the summary'
     assert '**Slowest part of the service:**' in summary
     assert '**Default for the robot\'s cycle:**' in summary

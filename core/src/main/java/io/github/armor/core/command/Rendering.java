@@ -3,6 +3,8 @@ package io.github.armor.core.command;
 
 import java.util.Collection;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.stream.Stream;
 import org.semanticweb.owlapi.model.IRI;
 import org.semanticweb.owlapi.model.OWLEntity;
@@ -11,7 +13,10 @@ import org.semanticweb.owlapi.vocab.Namespaces;
 
 /** How entities and literals are written into {@code queried_objects} (contract section 4). */
 public final class Rendering {
+    private static final int SHORT_FORMS_KEPT = 100_000;
+
     private final boolean fullIri;
+    private final Map<String, String> shortForms = new ConcurrentHashMap<>();
 
     public Rendering(boolean fullIri) {
         this.fullIri = fullIri;
@@ -23,6 +28,25 @@ public final class Rendering {
 
     public String iri(IRI iri) {
         return fullIri ? "<" + iri + ">" : iri.getShortForm();
+    }
+
+    /**
+     * An IRI given as text (SPARQL rows): the same form, without making an OWL API IRI for every
+     * value. Short forms are remembered, as rows name the same IRIs again and again.
+     */
+    public String iri(String iri) {
+        if (fullIri) {
+            return "<" + iri + ">";
+        }
+        String shortForm = shortForms.get(iri);
+        if (shortForm == null) {
+            if (shortForms.size() >= SHORT_FORMS_KEPT) {
+                shortForms.clear();
+            }
+            shortForm = IRI.create(iri).getShortForm();
+            shortForms.put(iri, shortForm);
+        }
+        return shortForm;
     }
 
     /** {@code "lexical"^^xsd:type}, or {@code "text"@lang} for a language-tagged string. */

@@ -8,37 +8,35 @@ import io.github.armor.core.api.Response;
 import io.github.armor.core.api.Response.QueryItem;
 import io.github.armor.core.api.SizeLimits;
 import io.github.armor.core.reference.Reference;
-import java.io.ByteArrayInputStream;
-import java.io.ByteArrayOutputStream;
 import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
+import org.apache.jena.graph.Node;
 import org.apache.jena.query.Query;
 import org.apache.jena.query.QueryCancelledException;
 import org.apache.jena.query.QueryExecution;
 import org.apache.jena.query.QueryExecutionFactory;
 import org.apache.jena.query.QueryFactory;
 import org.apache.jena.query.QueryParseException;
-import org.apache.jena.query.QuerySolution;
 import org.apache.jena.query.ResultSet;
-import org.apache.jena.rdf.model.Literal;
-import org.apache.jena.rdf.model.Model;
 import org.apache.jena.rdf.model.ModelFactory;
-import org.apache.jena.rdf.model.RDFNode;
 import org.apache.jena.shared.PrefixMapping;
+import org.apache.jena.sparql.core.Var;
+import org.apache.jena.sparql.engine.binding.Binding;
 import org.apache.jena.sparql.engine.http.Service;
-import org.semanticweb.owlapi.formats.NTriplesDocumentFormat;
-import org.semanticweb.owlapi.model.IRI;
-import org.semanticweb.owlapi.model.OWLOntology;
-import org.semanticweb.owlapi.model.OWLOntologyStorageException;
 
 /**
  * QUERY SPARQL with Apache Jena ARQ over the ontology plus its inferences (class and property
  * assertions, hierarchy), so that answers agree with the other queries. The reference's
  * declared prefixes are predefined in every query.
  *
- * <p>Two phases: under the reference's lock, the query is parsed and checked and the graph is
- * built (the reasoner's part); the graph is a private copy, so the query is evaluated after the
- * lock is released, within the time limit (node parameter sparql_timeout_ms).
+ * <p>Two phases: under the reference's lock, the query is parsed and checked and the reference's
+ * graph for its current state is taken ({@link SparqlGraphs}: made by the first query after a
+ * change, shared by the next ones); the graph is never changed, so the query is evaluated after
+ * the lock is released, in parallel with other queries, within the time limit (node parameter
+ * sparql_timeout_ms).
  */
 final class Sparql {
     private Sparql() {}
@@ -66,12 +64,12 @@ final class Sparql {
                     + " to allow it");
         }
         long limitMs = timeLimit(requestedMs, safeguards.sparqlTimeoutMs());
-        // The reasoner's part needs the reference; the graph it yields is a private copy.
-        Model model = model(c.reference());
+        // The reasoner's part needs the reference; the graph it yields is never changed.
+        InferredGraph graph = SparqlGraphs.current(c.reference());
         boolean consistent = c.reference().isConsistent();
         Rendering rendering = c.render();
         boolean federated = safeguards.sparqlFederated();
-        return c.afterRelease(() -> evaluate(query, model, limitMs, federated, rendering, consistent, formatted));
+        return c.afterRelease(() -> evaluate(query, graph, limitMs, federated, rendering, consistent, formatted));
     }
 
     /**
@@ -85,61 +83,87 @@ final class Sparql {
         return nodeMs;
     }
 
-    private static Response evaluate(Query query, Model model, long limitMs, boolean federated, Rendering rendering,
-                                     boolean consistent, boolean formatted) {
-        List<List<QueryItem>> rows = new ArrayList<>();
+    private static Response evaluate(Query query, InferredGraph graph, long limitMs, boolean federated,
+                                     Rendering rendering, boolean consistent, boolean formatted) {
+        Rows rows = new Rows(formatted);
         boolean timedOut = false;
-        long answerBytes = 0;
-        try (QueryExecution execution = QueryExecutionFactory.create(query, model)) {
+        try (QueryExecution execution = QueryExecutionFactory.create(query,
+                ModelFactory.createModelForGraph(graph.graph()))) {
             // Behind the check above: a SERVICE the check missed fails before connecting.
             execution.getContext().set(Service.serviceAllowed, federated);
+            graph.joinOrder().plan(execution.getContext());
             if (limitMs > 0) {
                 execution.setTimeout(limitMs);
             }
             if (query.isAskType()) {
-                rows.add(List.of(new QueryItem("ASK", String.valueOf(execution.execAsk()))));
+                rows.add(List.of("ASK"), new String[] {String.valueOf(execution.execAsk())});
             } else {
                 ResultSet results = execution.execSelect();
                 List<String> variables = results.getResultVars();
+                Var[] vars = variables.stream().map(Var::alloc).toArray(Var[]::new);
+                String[] values = new String[vars.length];
                 while (results.hasNext()) {
-                    QuerySolution solution = results.next();
-                    List<QueryItem> row = new ArrayList<>();
-                    for (String variable : variables) {
-                        RDFNode node = solution.get(variable);
-                        String value = node == null ? "" : render(rendering, node);
-                        answerBytes += variable.length() + SizeLimits.utf8Bytes(value);
-                        row.add(new QueryItem(variable, value));
+                    // Bindings of graph nodes: a QuerySolution would wrap each value in a model resource first.
+                    Binding solution = results.nextBinding();
+                    for (int i = 0; i < vars.length; i++) {
+                        Node node = solution.get(vars[i]);
+                        values[i] = node == null ? "" : render(rendering, node);
                     }
-                    if (answerBytes > SizeLimits.ANSWER_BYTES) {
-                        throw SizeLimits.tooLarge("the answer exceeds " + SizeLimits.size(SizeLimits.ANSWER_BYTES)
-                                + " after " + rows.size() + " rows; narrow the query or add a LIMIT");
-                    }
-                    rows.add(row);
+                    rows.add(variables, values);
                 }
             }
         } catch (QueryCancelledException e) {
             timedOut = true;
         }
-        if (formatted) {
-            List<QueryItem> items = new ArrayList<>();
-            for (List<QueryItem> row : rows) {
-                if (!items.isEmpty()) {
-                    items.add(new QueryItem("", ""));
-                }
-                items.addAll(row);
-            }
-            return Response.okSparql(consistent, items, timedOut);
-        }
-        List<String> lines = rows.stream().map(Sparql::rowText).toList();
-        return Response.ok(consistent, lines).withQueriedObjects(lines, timedOut);
+        return rows.response(consistent, timedOut);
     }
 
-    /** One variable: its value alone; several: {@code name=value} pairs joined by "; ". */
-    private static String rowText(List<QueryItem> row) {
-        if (row.size() == 1) {
-            return row.get(0).value();
+    /**
+     * The rows of an answer as the contract writes them: one string per row (one variable: its
+     * value alone; several: {@code name=value} pairs joined by "; "), or, FORMATTED, key/value
+     * items with an empty item between rows. Refuses an answer past the size limit.
+     */
+    private static final class Rows {
+        private final boolean formatted;
+        private final List<String> lines = new ArrayList<>();
+        private final List<QueryItem> items = new ArrayList<>();
+        private long bytes;
+        private int count;
+
+        Rows(boolean formatted) {
+            this.formatted = formatted;
         }
-        return String.join("; ", row.stream().map(i -> i.key() + "=" + i.value()).toList());
+
+        void add(List<String> variables, String[] values) {
+            StringBuilder line = formatted || variables.size() == 1 ? null : new StringBuilder();
+            if (formatted && count > 0) {
+                items.add(new QueryItem("", ""));
+            }
+            for (int i = 0; i < values.length; i++) {
+                String variable = variables.get(i);
+                bytes += variable.length() + SizeLimits.utf8Bytes(values[i]);
+                if (formatted) {
+                    items.add(new QueryItem(variable, values[i]));
+                } else if (line != null) {
+                    line.append(i == 0 ? "" : "; ").append(variable).append('=').append(values[i]);
+                }
+            }
+            if (bytes > SizeLimits.ANSWER_BYTES) {
+                throw SizeLimits.tooLarge("the answer exceeds " + SizeLimits.size(SizeLimits.ANSWER_BYTES)
+                        + " after " + count + " rows; narrow the query or add a LIMIT");
+            }
+            if (!formatted) {
+                lines.add(line == null ? values[0] : line.toString());
+            }
+            count++;
+        }
+
+        Response response(boolean consistent, boolean timedOut) {
+            if (formatted) {
+                return Response.okSparql(consistent, items, timedOut);
+            }
+            return Response.ok(consistent, List.of()).withQueriedObjects(lines, timedOut);
+        }
     }
 
     private static String joinSplitForm(String prefix, String select, String where) {
@@ -164,7 +188,35 @@ final class Sparql {
                 + text + "'");
     }
 
+    /**
+     * A query parsed with a reference's prefixes, kept for the next time the same text comes from
+     * a reference with the same prefixes: robots ask the same questions again and again, and
+     * parsing is about a tenth of a small query's time. Shared by concurrent executions, which
+     * only read it once its result variables are set.
+     */
+    private record ParsedQuery(Map<String, String> prefixes, String defaultNamespace, String text) {}
+
+    private static final int PARSED_QUERIES_KEPT = 256;
+    private static final Map<ParsedQuery, Query> PARSED = Collections.synchronizedMap(
+            new LinkedHashMap<>(PARSED_QUERIES_KEPT, 0.75f, true) {
+                @Override
+                protected boolean removeEldestEntry(Map.Entry<ParsedQuery, Query> eldest) {
+                    return size() > PARSED_QUERIES_KEPT;
+                }
+            });
+
     private static Query parse(Reference reference, String text) {
+        ParsedQuery key = new ParsedQuery(reference.names().prefixes(), reference.names().defaultNamespace(), text);
+        Query parsed = PARSED.get(key);
+        if (parsed == null) {
+            parsed = parseAnew(reference, text);
+            parsed.setResultVars();
+            PARSED.put(key, parsed);
+        }
+        return parsed;
+    }
+
+    private static Query parseAnew(Reference reference, String text) {
         PrefixMapping prefixes = PrefixMapping.Factory.create();
         reference.names().prefixes().forEach(prefixes::setNsPrefix);
         prefixes.setNsPrefix("", reference.names().defaultNamespace());
@@ -178,27 +230,14 @@ final class Sparql {
         }
     }
 
-    private static Model model(Reference reference) {
-        OWLOntology inferred = Inferences.withInferences(reference);
-        ByteArrayOutputStream triples = new ByteArrayOutputStream();
-        try {
-            inferred.getOWLOntologyManager().saveOntology(inferred, new NTriplesDocumentFormat(), triples);
-        } catch (OWLOntologyStorageException e) {
-            throw new ArmorException(ExitCode.INTERNAL_ERROR, "could not prepare the SPARQL graph: " + e.getMessage(), e);
-        }
-        Model model = ModelFactory.createDefaultModel();
-        model.read(new ByteArrayInputStream(triples.toByteArray()), null, "N-TRIPLES");
-        return model;
-    }
-
-    private static String render(Rendering rendering, RDFNode node) {
-        if (node.isURIResource()) {
-            return rendering.iri(IRI.create(node.asResource().getURI()));
+    private static String render(Rendering rendering, Node node) {
+        if (node.isURI()) {
+            return rendering.iri(node.getURI());
         }
         if (node.isLiteral()) {
-            Literal literal = node.asLiteral();
-            return Rendering.literal(literal.getLexicalForm(), literal.getLanguage(), literal.getDatatypeURI());
+            return Rendering.literal(node.getLiteralLexicalForm(), node.getLiteralLanguage(),
+                    node.getLiteralDatatypeURI());
         }
-        return "_:" + node.asResource().getId();
+        return "_:" + node.getBlankNodeLabel();
     }
 }

@@ -67,6 +67,8 @@ public final class Reference {
     private Transaction transaction;
     // Read by event and subscription threads without the lock; written only under it.
     private volatile long revision;
+    // In memory only: derived state (the SPARQL graph) is rebuilt when it moves; read under the lock.
+    private long modificationCount;
 
     /**
      * A reference over an ontology. Plain names take the ontology IRI of the settings (or the
@@ -188,6 +190,15 @@ public final class Reference {
 
     public boolean isConsistent() {
         return consistent;
+    }
+
+    /**
+     * How many times the ontology or the reasoner's view of it has changed (enacted changes,
+     * APPLY, rollbacks, reasoner flushes and rebuilds) since the reference was opened. Whatever
+     * is derived from both may be kept while this stays the same.
+     */
+    public long modificationCount() {
+        return modificationCount;
     }
 
     public String mountedBy() {
@@ -314,6 +325,7 @@ public final class Reference {
             reversed.add(undo.enacted.get(i).reverseChange());
         }
         manager.applyChanges(reversed);
+        modificationCount++;
         removedSinceSync |= reversed.stream().anyMatch(OWLOntologyChange::isRemoveAxiom);
         if (undo.pendingBefore != null) {
             pending.clear();
@@ -331,6 +343,7 @@ public final class Reference {
             return;
         }
         List<OWLOntologyChange> enacted = new ArrayList<>(manager.applyChangesAndGetDetails(changes).getEnactedChanges());
+        modificationCount++;
         removedSinceSync |= enacted.stream().anyMatch(OWLOntologyChange::isRemoveAxiom);
         if (transaction != null) {
             transaction.enacted.addAll(enacted);
@@ -355,6 +368,7 @@ public final class Reference {
      * whose property was not in the ontology when it was created. ELK updates itself correctly.
      */
     private void bringReasonerUpToDate() {
+        modificationCount++;
         if (removedSinceSync && !reasonerName.equals("ELK")) {
             rebuildReasoner();
             return;
@@ -389,6 +403,7 @@ public final class Reference {
     private OWLReasoner reasoner() {
         if (reasoner == null) {
             reasoner = createReasoner();
+            modificationCount++;
             removedSinceSync = false;
         }
         return reasoner;
