@@ -139,8 +139,9 @@ class _Relay:
             try:
                 request = json.loads(stream.readline())
                 if request.get('stop'):
-                    send({'stopped': True})
+                    # Gone before it says so: a caller told 'stopped' finds no socket left.
                     self._close_socket()
+                    send({'stopped': True})
                     return
                 send(self._answer(request, send))
             except Exception as error:  # the relay outlives any one bad call
