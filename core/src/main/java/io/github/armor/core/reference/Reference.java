@@ -72,6 +72,9 @@ public final class Reference {
     private boolean consistent = true;
     private String mountedBy = "";
     private Transaction transaction;
+    // When the reasoner was last brought up to date and how long it took (the web view shows them).
+    private volatile long lastReasoningEpochMs;
+    private volatile long lastReasoningNanos;
 
     /**
      * A reference over an ontology. Plain names take the ontology IRI of the settings (or the
@@ -100,8 +103,10 @@ public final class Reference {
         this.bufferedManipulation = settings.bufferedManipulation();
         this.bufferedReasoner = settings.bufferedReasoner();
         this.reasonerTimeoutMs = reasonerTimeoutMs;
-        this.reasoner = createReasoner();
-        refreshConsistency();
+        timedReasoning(() -> {
+            this.reasoner = createReasoner();
+            refreshConsistency();
+        });
     }
 
     /** Runs {@code work} holding this reference, waiting at most {@code waitMs} for other directives. */
@@ -212,12 +217,14 @@ public final class Reference {
     /** REASON: apply the queue, bring the reasoner up to date, recompute consistency and inferences. */
     public void reason() {
         applyPending();
-        bringReasonerUpToDate();
-        refreshConsistency();
-        if (consistent) {
-            precompute(InferenceType.CLASS_HIERARCHY);
-            precompute(InferenceType.CLASS_ASSERTIONS);
-        }
+        timedReasoning(() -> {
+            bringReasonerUpToDate();
+            refreshConsistency();
+            if (consistent) {
+                precompute(InferenceType.CLASS_HIERARCHY);
+                precompute(InferenceType.CLASS_ASSERTIONS);
+            }
+        });
     }
 
     /**
@@ -315,8 +322,30 @@ public final class Reference {
      * a restore this makes even a buffered reasoner see everything that was replayed.
      */
     public void synchroniseReasoner() {
-        bringReasonerUpToDate();
-        refreshConsistency();
+        timedReasoning(() -> {
+            bringReasonerUpToDate();
+            refreshConsistency();
+        });
+    }
+
+    /** When the reasoner was last brought up to date (ms since the epoch; 0: never). */
+    public long lastReasoningEpochMs() {
+        return lastReasoningEpochMs;
+    }
+
+    /** How long bringing the reasoner up to date took that time, in nanoseconds. */
+    public long lastReasoningNanos() {
+        return lastReasoningNanos;
+    }
+
+    private void timedReasoning(Runnable work) {
+        long start = System.nanoTime();
+        try {
+            work.run();
+        } finally {
+            lastReasoningNanos = System.nanoTime() - start;
+            lastReasoningEpochMs = System.currentTimeMillis();
+        }
     }
 
     /**

@@ -5,6 +5,7 @@ import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import io.github.armor.core.ArmorCore;
 import io.github.armor.core.command.Catalogue;
+import io.github.armor.core.view.ReferenceViews;
 import java.io.EOFException;
 import java.io.IOException;
 import java.net.StandardProtocolFamily;
@@ -29,7 +30,9 @@ import org.slf4j.LoggerFactory;
  *
  * <p>Requests: {@code {"id", "op": "directive", "directive": {...}}},
  * {@code {"id", "op": "list", "directives": [...]}}, {@code {"id", "op": "ping"}}, and the read-only
- * {@code {"id", "op": "catalogue"}}, answered {@code {"id", "catalogue": {...}}} (see {@link Catalogue}).
+ * {@code {"id", "op": "catalogue"}}, answered {@code {"id", "catalogue": {...}}} (see {@link Catalogue}), and
+ * the read-only {@code {"id", "op": "view", "view": {"name", ...}}} of the web page, answered
+ * {@code {"id", "view": {...}}} (see {@link ReferenceViews}).
  */
 public final class CoreServer {
     private static final Logger LOG = LoggerFactory.getLogger(CoreServer.class);
@@ -39,11 +42,13 @@ public final class CoreServer {
 
     private final ArmorCore core;
     private final JsonObject catalogue;
+    private final ReferenceViews views;
     private final ExecutorService workers = Executors.newCachedThreadPool(new WorkerThreads());
 
     public CoreServer(ArmorCore core, JsonObject catalogue) {
         this.core = core;
         this.catalogue = catalogue;
+        this.views = core.views();
     }
 
     /** Binds the socket, then calls {@code onReady} and serves until the process ends. */
@@ -96,6 +101,7 @@ public final class CoreServer {
                         WireCodec.listResponse(core.executeList(WireCodec.directives(request.getAsJsonArray("directives")))));
                 case "ping" -> reply.addProperty("pong", true);
                 case "catalogue" -> reply.add("catalogue", catalogue);
+                case "view" -> reply.add("view", views.answer(request.getAsJsonObject("view")));
                 default -> reply.addProperty("error", "unknown op '" + op + "'");
             }
         } catch (RuntimeException | LinkageError | StackOverflowError e) {
