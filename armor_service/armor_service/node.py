@@ -29,6 +29,7 @@ class ArmorService(Node):
 
     def __init__(self):
         super().__init__('armor_service')
+        self._web_view = None
         self._armor_parameters = {p.name: p for p in all_parameters()}
         self._declare_parameters()
         settings = {p.name: self._value(p.name) for p in self._armor_parameters.values() if p.core}
@@ -47,11 +48,13 @@ class ArmorService(Node):
         self.create_service(ArmorDirectiveList, LIST_SERVICE,
                             self.directive_list_callback, qos_profile=SERVICE_QOS,
                             callback_group=group)
+        self._web_view = self._start_web_view()
         self.get_logger().info(
             f'ARMOR ready: services {self.resolve_service_name(DIRECTIVE_SERVICE)} and '
             f'{self.resolve_service_name(LIST_SERVICE)}; core pid '
             f'{self._core.pid}. Try: armor call {self._value("preload_reference") or "REF"} '
-            'QUERY IND CLASS -- Room')
+            'QUERY IND CLASS -- Room'
+            + (f'. Web view: {self._web_view.url}' if self._web_view else ''))
 
     def directive_callback(self, request, response):
         payload = {'op': 'directive', 'directive': wire.directive_to_json(request.armor_request)}
@@ -89,7 +92,30 @@ class ArmorService(Node):
         return response
 
     def shutdown_core(self) -> None:
+        if self._web_view is not None:
+            self._web_view.stop()
         self._core.stop()
+
+    def _start_web_view(self):
+        """The live web page (armor_service/web) when web_port is set; None when it is off."""
+        port = self._value('web_port')
+        if port == 0:
+            return None
+        if not 0 < port < 65536:
+            raise RuntimeError(f'parameter web_port must be 0 (off) or a TCP port from 1 to 65535, '
+                               f'got {port}')
+        from armor_service.web import WebView
+        from armor_service.web.server import WebViewError
+        view = WebView(self._core, self._value('web_host'), port,
+                       request_timeout_s=self._request_timeout(), logger=self.get_logger())
+        try:
+            view.start()
+        except WebViewError as error:
+            # The robot's services matter more than the page: they run without it.
+            self.get_logger().error(f'{error}; the node serves ROS without the web view '
+                                    '(set web_port to a free port)')
+            return None
+        return view
 
     def _timed_out(self):
         answer = wire.error_response(

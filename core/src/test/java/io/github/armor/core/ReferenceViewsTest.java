@@ -136,6 +136,7 @@ class ReferenceViewsTest {
     void classDetailGivesItsDefinitionAndItsInstancesAssertedOrInferred() {
         JsonObject occupied = view("{\"name\": \"class\", \"reference\": \"map\", \"class\": \"OccupiedRoom\"}");
         assertEquals(List.of("Room and (contains some Agent)"), strings(occupied.getAsJsonArray("equivalent_to")));
+        assertEquals(List.of("contains some Agent"), strings(occupied.getAsJsonArray("restrictions")));
         assertEquals(Map.of("kitchen", false), marked(occupied.getAsJsonArray("instances")));
         assertEquals(List.of("Location", "Room"), names(occupied.getAsJsonArray("inferred_superclasses")));
         assertFalse(occupied.get("unsatisfiable").getAsBoolean());

@@ -5,6 +5,7 @@ import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.command.Queries;
 import io.github.armor.core.command.Syntax;
 import io.github.armor.core.reference.Reference;
 import java.util.ArrayDeque;
@@ -101,7 +102,8 @@ final class ClassHierarchy {
 
     /**
      * One class: its frame in Manchester syntax (EquivalentTo, SubClassOf, DisjointWith, as
-     * asserted), its inferred superclasses, whether it is satisfiable, and its instances (at most
+     * asserted), its restrictions (as QUERY CLASS RESTRICTIONS, by short names), its inferred
+     * superclasses, whether it is satisfiable, and its instances (at most
      * {@code instanceLimit}, by name; {@code instance_count} tells how many there are).
      */
     JsonObject detail(String referenceName, String className, int instanceLimit) {
@@ -119,6 +121,7 @@ final class ClassHierarchy {
                     r.ontology().importsClosure())));
             view.add("disjoint_with", manchester(r, EntitySearcher.getDisjointClasses(owlClass,
                     r.ontology().importsClosure()).filter(e -> !e.equals(owlClass))));
+            view.add("restrictions", ViewJson.strings(Queries.restrictions(r, owlClass, false)));
             view.add("annotations", ViewJson.strings(r.ontology().importsClosure()
                     .flatMap(o -> EntitySearcher.getAnnotations(owlClass, o))
                     .map(a -> a.getProperty().getIRI().getShortForm() + ": "
