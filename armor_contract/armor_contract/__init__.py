@@ -8,5 +8,6 @@ this package:
   generated from ``java -jar armor-core.jar --catalogue`` into ``catalogue.json`` (``make
   catalogue``; a test fails when the file and the core differ);
 - ``exit_codes``: the exit codes as an IntEnum (checked against the catalogue by a test);
-- ``services``: the names of ARMOR's services and their QoS profile, on both ends.
+- ``services``: the names of ARMOR's services and their QoS profile, on both ends;
+- ``events``: the change topic, its QoS, and the subscription services (issue 12).
 """

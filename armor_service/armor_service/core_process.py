@@ -4,6 +4,28 @@
 Reasoners hang, overflow their stack or exhaust memory on real ontologies. Running them in a
 child process means the node survives all three: requests in flight when the core dies fail
 with CORE_UNAVAILABLE, and a new core is started in the background.
+
+Events: besides answering requests, the core pushes frames nobody asked for (no ``id``).
+``CoreProcess.add_event_listener(callback)`` hands each to ``callback(event)``, a dict, on one
+delivery thread, in the order the core sent them (so per reference in revision order). Kinds,
+by ``event["event"]``:
+
+``"change"``: one acknowledged change of a reference (a directive, or a whole atomic list)::
+
+    {"event": "change", "reference": str, "revision": int, "client_name": str,
+     "directives": [directive dict, ...], "exit_code": 0, "is_consistent": bool,
+     "stamp_ns": int}
+
+  ``revision`` is the reference's revision after the change: 0 for the LOAD or CREATE that
+  made it, one more for each later change (a list: one for each reference it changed), and one
+  more for its DROP, its last event. Failed and rolled-back directives make none. Revisions
+  live in the journal, so they continue across core and node restarts. A directive dict has
+  the armor_msgs ArmorDirectiveReq field names. ``stamp_ns`` is when the core acknowledged the
+  change (nanoseconds since the Unix epoch).
+
+A listener must return quickly (it holds up the events after it) and should not raise (an
+exception is logged and the next listener still gets the event). Events of a core that dies
+are not repeated by the next one: a listener that needs every change compares revisions.
 """
 
 import concurrent.futures
@@ -11,13 +33,14 @@ import itertools
 import json
 import logging
 import os
+import queue
 import shutil
 import socket
 import subprocess
 import tempfile
 import threading
 import time
-from typing import Callable, Optional
+from typing import Any, Callable, Dict, List, Optional
 
 from armor_service import wire
 
@@ -71,6 +94,9 @@ class CoreProcess:
         self._available = False
         self._stopping = False
         self._socket_dir = tempfile.mkdtemp(prefix='armor-core-')
+        self._event_listeners: List[Callable[[Dict[str, Any]], None]] = []
+        self._events: 'queue.Queue[Optional[dict]]' = queue.Queue()
+        self._event_thread: Optional[threading.Thread] = None
 
     @property
     def pid(self) -> Optional[int]:
@@ -134,6 +160,20 @@ class CoreProcess:
             generation = self._generation
         return self._exchange(payload, connection, generation, timeout_s)
 
+    def add_event_listener(self, callback: Callable[[Dict[str, Any]], None]) -> None:
+        """Call callback(event) for every event the core pushes from now on (module docstring)."""
+        with self._state:
+            self._event_listeners = [*self._event_listeners, callback]
+            if self._event_thread is None:
+                self._event_thread = threading.Thread(target=self._deliver_events, daemon=True,
+                                                      name='armor-core-events')
+                self._event_thread.start()
+
+    def remove_event_listener(self, callback: Callable[[Dict[str, Any]], None]) -> None:
+        """Stop calling callback (a no-op for one never added)."""
+        with self._state:
+            self._event_listeners = [c for c in self._event_listeners if c is not callback]
+
     def catalogue(self, timeout_s: Optional[float] = None) -> dict:
         """The running core's catalogue: commands (with plugins'), exit codes, settings."""
         return self.request({'op': 'catalogue'}, timeout_s)['catalogue']
@@ -170,6 +210,7 @@ class CoreProcess:
             process, connection = self._process, self._socket
             self._fail_pending('the node is shutting down')
             self._state.notify_all()
+        self._events.put(None)
         if connection:
             connection.close()
         if process and process.poll() is None:
@@ -228,12 +269,29 @@ class CoreProcess:
         try:
             while True:
                 reply = wire.receive_frame(connection)
+                if 'id' not in reply:
+                    if 'event' in reply and self._event_listeners:
+                        self._events.put(reply)
+                    continue
                 with self._state:
                     future = self._pending.pop(reply.get('id'), None)
                 if future is not None:
                     future.set_result(reply)
         except (OSError, ConnectionError, ValueError) as error:
             self._core_lost(generation, f'connection to the core lost ({error})')
+
+    def _deliver_events(self) -> None:
+        """Hand each event to every listener, in order, off the reader thread."""
+        while True:
+            event = self._events.get()
+            if event is None:
+                return
+            for listener in self._event_listeners:
+                try:
+                    listener(event)
+                except Exception as error:  # a listener's bug must not stop the others' events
+                    self._log.error(f'an event listener failed on {event.get("event")} event '
+                                    f'of "{event.get("reference")}": {error!r}')
 
     def _watch_exit(self, process: subprocess.Popen, generation: int) -> None:
         code = process.wait()

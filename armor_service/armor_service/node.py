@@ -11,8 +11,10 @@ import difflib
 import os
 import sys
 
+from armor_contract.events import CHANGE_QOS, CHANGE_TOPIC
 from armor_contract.exit_codes import ExitCode
 from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
+from armor_msgs.msg import ArmorChange
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service import wire
 from armor_service.core_process import CoreProcess, CoreUnavailable
@@ -25,7 +27,7 @@ from rclpy.node import Node
 
 
 class ArmorService(Node):
-    """Serves armor_interface_srv and armor_interface_serialized_srv."""
+    """Serves armor_interface_srv and armor_interface_serialized_srv; publishes armor_changes."""
 
     def __init__(self):
         super().__init__('armor_service')
@@ -38,6 +40,9 @@ class ArmorService(Node):
             self._core_jar(), settings, jvm_options=tuple(self._value('jvm_options')),
             start_timeout_s=self._value('core_start_timeout_s'), logger=self.get_logger(),
             on_ready=self._preload)
+        # Before the core starts: the preload's LOAD is a change too.
+        self._changes = self.create_publisher(ArmorChange, CHANGE_TOPIC, CHANGE_QOS)
+        self._core.add_event_listener(self.on_core_event)
         self._core.start()
         # Each callback blocks until the core answers. A reentrant group on a multi-threaded
         # executor lets a slow REASON on one reference wait while queries on others (and on
@@ -51,7 +56,8 @@ class ArmorService(Node):
         self._web_view = self._start_web_view()
         self.get_logger().info(
             f'ARMOR ready: services {self.resolve_service_name(DIRECTIVE_SERVICE)} and '
-            f'{self.resolve_service_name(LIST_SERVICE)}; core pid '
+            f'{self.resolve_service_name(LIST_SERVICE)}, changes on '
+            f'{self.resolve_topic_name(CHANGE_TOPIC)}; core pid '
             f'{self._core.pid}. Try: armor call {self._value("preload_reference") or "REF"} '
             'QUERY IND CLASS -- Room'
             + (f'. Web view: {self._web_view.url}' if self._web_view else ''))
@@ -90,6 +96,11 @@ class ArmorService(Node):
             response.success = False
             response.armor_responses = [self._timed_out() for _ in directives]
         return response
+
+    def on_core_event(self, event: dict) -> None:
+        """Publish what the core announces (on its event thread, in the core's order)."""
+        if event.get('event') == 'change':
+            self._changes.publish(wire.change_from_json(event))
 
     def shutdown_core(self) -> None:
         if self._web_view is not None:

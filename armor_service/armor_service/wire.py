@@ -10,7 +10,8 @@ import json
 import socket
 import struct
 
-from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes, QueryItem
+from armor_msgs.msg import ArmorChange, ArmorDirectiveReq, ArmorDirectiveRes, QueryItem
+from builtin_interfaces.msg import Time
 
 _HEADER = struct.Struct('>I')
 # The largest frame either side reads; the core's own size limits (SizeLimits.java) are far
@@ -59,6 +60,26 @@ def directive_to_json(request: ArmorDirectiveReq) -> dict:
     fields = {name: getattr(request, name) for name in _REQUEST_FIELDS}
     fields['args'] = list(request.args)
     return fields
+
+
+def directive_from_json(fields: dict) -> ArmorDirectiveReq:
+    request = ArmorDirectiveReq(**{name: fields.get(name, '') for name in _REQUEST_FIELDS})
+    request.args = list(fields.get('args', []))
+    return request
+
+
+def stamp_from_ns(nanoseconds: int) -> Time:
+    return Time(sec=nanoseconds // 1_000_000_000, nanosec=nanoseconds % 1_000_000_000)
+
+
+def change_from_json(event: dict) -> ArmorChange:
+    """An ArmorChange from the core's change event (core_process.py describes its keys)."""
+    return ArmorChange(
+        reference_name=event['reference'], revision=int(event['revision']),
+        client_name=event['client_name'],
+        directives=[directive_from_json(d) for d in event['directives']],
+        exit_code=int(event['exit_code']), is_consistent=bool(event['is_consistent']),
+        stamp=stamp_from_ns(int(event['stamp_ns'])))
 
 
 def response_from_json(fields: dict) -> ArmorDirectiveRes:

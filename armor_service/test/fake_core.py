@@ -9,6 +9,8 @@ The directive's command says what to do:
   BARRIER n     answer only once n BARRIER requests are waiting (so n must be in flight at once)
   HANG          never answer
   DIE           exit at once with code 9 (the core dying mid-request)
+  EVENTS n      push n change events (revisions 1..n of reference r, frames without an id),
+                then answer
 """
 
 import json
@@ -57,6 +59,13 @@ def answer(connection, send_lock, request, barrier, waiting) -> None:
             os._exit(9)
         if command == 'HANG':
             return
+        if command == 'EVENTS':
+            for revision in range(1, int(args[0]) + 1):
+                with send_lock:
+                    wire.send_frame(connection, {
+                        'event': 'change', 'reference': 'r', 'revision': revision,
+                        'client_name': 't', 'directives': [directive], 'exit_code': 0,
+                        'is_consistent': True, 'stamp_ns': 0})
         if command == 'BARRIER':
             with barrier:
                 waiting[0] += 1

@@ -125,3 +125,29 @@ def test_stop_answers_waiting_requests_and_ends_the_core(make_core):
     wait_until(lambda: not pathlib.Path(f'/proc/{pid}').exists()
                or 'Z' in pathlib.Path(f'/proc/{pid}/stat').read_text().split()[2])
     assert 'shutting down' in str(results[0].value)
+
+
+def test_events_reach_every_listener_in_order_and_a_failing_listener_stops_none(make_core):
+    core = make_core()
+    first, second = [], []
+    done = threading.Event()
+
+    def failing(event):
+        first.append(event['revision'])
+        raise ValueError('a listener with a bug')
+
+    def recording(event):
+        second.append(event['revision'])
+        if event['revision'] == 200:
+            done.set()
+    core.add_event_listener(failing)
+    core.add_event_listener(recording)
+    reply = core.request(directive('EVENTS', '200'))
+    assert reply['response']['queried_objects'] == ['200'], 'the reply is not taken for an event'
+    assert done.wait(30)
+    assert first == second == list(range(1, 201))
+
+    core.remove_event_listener(recording)
+    core.request(directive('EVENTS', '3'))
+    wait_until(lambda: len(first) == 203)
+    assert len(second) == 200

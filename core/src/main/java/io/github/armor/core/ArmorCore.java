@@ -15,6 +15,8 @@ import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.command.DirectiveLog;
 import io.github.armor.core.command.Rendering;
 import io.github.armor.core.durability.StateStore;
+import io.github.armor.core.events.ChangeEvent;
+import io.github.armor.core.events.EventFeed;
 import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
@@ -33,6 +35,10 @@ import org.slf4j.LoggerFactory;
  * The knowledge core's single entry point: a directive (or an atomic list of them) in, ARMOR's
  * response out. Every failure becomes an exit code here; nothing a client sends escapes as an
  * exception. Thread-safe: directives on different references run in parallel.
+ *
+ * <p>Every acknowledged change is also published on {@link #events()} with the reference's new
+ * revision (see {@link ChangeEvent} for what makes one), while the directive still holds the
+ * reference, so each reference's events leave in revision order.
  */
 public final class ArmorCore implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(ArmorCore.class);
@@ -45,6 +51,7 @@ public final class ArmorCore implements AutoCloseable {
     private final RecentDirectives recentDirectives = new RecentDirectives();
     private final Map<String, Long> lastHeardFrom = new ConcurrentHashMap<>();
     private final StateStore state;
+    private final EventFeed events = new EventFeed();
     // Replayed directives were journaled when first acknowledged: they must not be again.
     private final ThreadLocal<Boolean> replaying = ThreadLocal.withInitial(() -> false);
 
@@ -77,6 +84,7 @@ public final class ArmorCore implements AutoCloseable {
                 reference.setMountedBy(restorable.mountedBy());
                 references.register(reference);
                 restorable.records().forEach(this::replay);
+                reference.setRevision(restorable.revision());
                 reference.synchroniseReasoner();
                 state.adopt(restorable);
                 LOG.info("restored reference '{}' from the state directory {}: {} axioms, {} individuals,"
@@ -90,10 +98,10 @@ public final class ArmorCore implements AutoCloseable {
         }
     }
 
-    private void replay(List<Directive> record) {
+    private void replay(StateStore.JournaledChange record) {
         replaying.set(true);
         try {
-            for (Directive directive : record) {
+            for (Directive directive : record.directives()) {
                 Response response = run(directive, null);
                 if (!response.success()) {
                     LOG.warn("replaying {} failed: {} {}", directive.describe(), response.exitCode(),
@@ -108,14 +116,23 @@ public final class ArmorCore implements AutoCloseable {
     /** Finishes writing state and releases the state directory; the core answers nothing afterwards. */
     @Override
     public void close() {
+        events.close();
         if (state != null) {
             state.close();
         }
     }
 
-    /** Directives whose effect must survive a restart (by kind: changes and mounting), when not replayed. */
-    private boolean journaled(CommandSpec spec) {
-        return state != null && !replaying.get() && spec.kind().journaled();
+    /** Where acknowledged changes are announced: {@link ChangeEvent}s, and subscriptions' answers. */
+    public EventFeed events() {
+        return events;
+    }
+
+    /**
+     * Directives whose effect must survive a restart (by kind: changes and mounting), when not
+     * replayed: each acknowledged one is journaled (with a state directory) and makes a revision.
+     */
+    private boolean makesRevision(CommandSpec spec) {
+        return !replaying.get() && spec.kind().journaled();
     }
 
     /** The answer of a list: one response per directive, in order. */
@@ -173,6 +190,7 @@ public final class ArmorCore implements AutoCloseable {
                 return new ListResponse(false, false, undone);
             }
             list.commit();
+            list.announce();
             boolean consistent = responses.isEmpty() || responses.get(responses.size() - 1).isConsistent();
             return new ListResponse(true, consistent, responses);
         }
@@ -254,11 +272,16 @@ public final class ArmorCore implements AutoCloseable {
                     if (list != null && spec.mountChecked()) {
                         list.changedBy.add(list.position);
                     }
-                    if (list != null && journaled(spec)) {
+                    if (list != null && makesRevision(spec)) {
                         list.toJournal.computeIfAbsent(reference, r -> new ArrayList<>()).add(directive);
                     }
-                    if (state != null && !replaying.get() && spec.kind() == CommandKind.DROPPING) {
-                        state.dropped(reference);
+                    if (!replaying.get() && spec.kind() == CommandKind.DROPPING) {
+                        if (state != null) {
+                            state.dropped(reference);
+                        }
+                        // A DROP is final even inside a list (no rollback brings a reference back).
+                        events.publish(ChangeEvent.now(reference.name(), reference.revision() + 1, List.of(directive),
+                                reference.isConsistent()));
                     }
                     return response;
                 });
@@ -280,9 +303,17 @@ public final class ArmorCore implements AutoCloseable {
         }
         try {
             Response response = spec.handler().run(context);
-            if (list == null && journaled(spec)) {
-                state.record(reference, List.of(directive));
-                state.checkpointIfDue(reference);
+            if (list == null && makesRevision(spec)) {
+                long revision = reference.revision() + 1;
+                if (state != null) {
+                    state.record(reference, revision, List.of(directive));
+                }
+                reference.setRevision(revision);
+                if (state != null) {
+                    state.checkpointIfDue(reference);
+                }
+                events.publish(ChangeEvent.now(reference.name(), revision, List.of(directive),
+                        reference.isConsistent()));
             }
             return response;
         } catch (RuntimeException | StackOverflowError e) {
@@ -307,6 +338,15 @@ public final class ArmorCore implements AutoCloseable {
             } catch (ArmorException e) {
                 references.remove(made);
                 throw e;
+            }
+        }
+        if (!replaying.get() && !existed && made != null) {
+            ChangeEvent creation = ChangeEvent.now(made.name(), made.revision(), List.of(directive),
+                    made.isConsistent());
+            if (list == null) {
+                events.publish(creation);
+            } else {
+                list.creations.add(creation);
             }
         }
         if (list != null) {
@@ -386,14 +426,32 @@ public final class ArmorCore implements AutoCloseable {
         final List<Reference> created = new ArrayList<>();
         final Set<Integer> changedBy = new LinkedHashSet<>();
         final Map<Reference, List<Directive>> toJournal = new java.util.LinkedHashMap<>();
+        final List<ChangeEvent> creations = new ArrayList<>();
         int position;
 
-        /** One journal record per reference for the whole list, before it is acknowledged. */
+        /**
+         * One journal record per reference for the whole list, before it is acknowledged: the
+         * list is one revision of each reference it changed.
+         */
         void journal() {
             toJournal.forEach((reference, directives) -> {
-                ArmorCore.this.state.record(reference, directives);
+                if (ArmorCore.this.state != null) {
+                    ArmorCore.this.state.record(reference, reference.revision() + 1, directives);
+                }
             });
-            toJournal.keySet().forEach(reference -> ArmorCore.this.state.checkpointIfDue(reference));
+            toJournal.keySet().forEach(reference -> {
+                reference.setRevision(reference.revision() + 1);
+                if (ArmorCore.this.state != null) {
+                    ArmorCore.this.state.checkpointIfDue(reference);
+                }
+            });
+        }
+
+        /** After the commit, while the list still holds its references: its creations, then its changes. */
+        void announce() {
+            creations.forEach(events::publish);
+            toJournal.forEach((reference, directives) -> events.publish(ChangeEvent.now(reference.name(),
+                    reference.revision(), directives, reference.isConsistent())));
         }
 
         void enrol(Reference reference) {

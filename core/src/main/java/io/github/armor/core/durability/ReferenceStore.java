@@ -40,6 +40,11 @@ import org.slf4j.LoggerFactory;
  * {@code journal-N.log} (directives acknowledged since). A reference is its checkpoint plus
  * its journals replayed in order.
  *
+ * <p>Each journal record carries the reference's revision after it ({@code {"revision": n,
+ * "directives": [...]}}; records of older versions, bare arrays, count one more than the one
+ * before), and meta names the revision of its checkpoint, so a restored reference continues the
+ * revisions it had.
+ *
  * <p>Checkpoints are taken in two steps so that queries wait only for an in-memory copy: under
  * the reference's lock the ontology is copied and a new journal is started (meta then lists
  * both journals); the copy is written in the background, and only when it is on disk does meta
@@ -54,6 +59,7 @@ final class ReferenceStore {
     private Reference.Settings settings;
     private String formatClass;
     private long checkpointSeq;
+    private long checkpointRevision;
     private final List<Long> journalSeqs = new ArrayList<>();
     private Journal journal;
     private int recordsSinceCheckpoint;
@@ -68,7 +74,8 @@ final class ReferenceStore {
 
     /** What recovery needs: the checkpoint to load and the records to replay on top. */
     record Recovered(ReferenceStore store, String name, Reference.Settings settings, String mountedBy,
-                     String formatClass, Path checkpoint, List<List<Directive>> records, int tornTails) {}
+                     String formatClass, Path checkpoint, List<StateStore.JournaledChange> records, long revision,
+                     int tornTails) {}
 
     /** Files for a new reference: its first checkpoint is the ontology as loaded. */
     static ReferenceStore create(Path dir, Reference reference, Durability durability) throws IOException {
@@ -78,6 +85,7 @@ final class ReferenceStore {
         OWLDocumentFormat format = reference.manager().getOntologyFormat(reference.ontology());
         store.formatClass = format == null ? "" : format.getClass().getName();
         store.checkpointSeq = 1;
+        store.checkpointRevision = reference.revision();
         writeCheckpoint(snapshot(reference), store.checkpointFile(1));
         store.startJournal(1);
         store.writeMeta(reference.mountedBy());
@@ -94,7 +102,9 @@ final class ReferenceStore {
                 s.get("buffered_manipulation").getAsBoolean(), s.get("buffered_reasoner").getAsBoolean());
         store.formatClass = meta.get("format").getAsString();
         store.checkpointSeq = meta.get("checkpoint").getAsLong();
-        List<List<Directive>> records = new ArrayList<>();
+        store.checkpointRevision = meta.has("checkpoint_revision") ? meta.get("checkpoint_revision").getAsLong() : 0;
+        List<StateStore.JournaledChange> records = new ArrayList<>();
+        long revision = store.checkpointRevision;
         int torn = 0;
         for (JsonElement seq : meta.getAsJsonArray("journals")) {
             Path file = store.journalFile(seq.getAsLong());
@@ -106,12 +116,9 @@ final class ReferenceStore {
                 Journal.truncate(file, contents.validBytes());
             }
             for (byte[] record : contents.records()) {
-                List<Directive> directives = new ArrayList<>();
-                for (JsonElement d : JsonParser.parseString(new String(record, StandardCharsets.UTF_8))
-                        .getAsJsonArray()) {
-                    directives.add(DirectiveJson.fromJson(d.getAsJsonObject()));
-                }
-                records.add(directives);
+                StateStore.JournaledChange change = parseRecord(record, revision + 1);
+                revision = change.revision();
+                records.add(change);
             }
             store.journalSeqs.add(seq.getAsLong());
         }
@@ -119,14 +126,38 @@ final class ReferenceStore {
         store.journal = Journal.openForAppend(store.journalFile(last), durability.fsync());
         store.recordsSinceCheckpoint = records.size();
         return new Recovered(store, store.name, store.settings, meta.get("mounted_by").getAsString(),
-                store.formatClass, store.checkpointFile(store.checkpointSeq), records, torn);
+                store.formatClass, store.checkpointFile(store.checkpointSeq), records, revision, torn);
     }
 
-    /** Appends one record: the directives of one acknowledgement, replayed together or not at all. */
-    synchronized void record(List<Directive> directives) throws IOException {
+    /** One record: {@code {"revision", "directives"}}, or a bare array of directives written before revisions. */
+    private static StateStore.JournaledChange parseRecord(byte[] record, long revisionIfUnnamed) {
+        JsonElement json = JsonParser.parseString(new String(record, StandardCharsets.UTF_8));
+        long revision = revisionIfUnnamed;
+        JsonArray array;
+        if (json.isJsonObject()) {
+            revision = json.getAsJsonObject().get("revision").getAsLong();
+            array = json.getAsJsonObject().getAsJsonArray("directives");
+        } else {
+            array = json.getAsJsonArray();
+        }
+        List<Directive> directives = new ArrayList<>();
+        for (JsonElement d : array) {
+            directives.add(DirectiveJson.fromJson(d.getAsJsonObject()));
+        }
+        return new StateStore.JournaledChange(revision, directives);
+    }
+
+    /**
+     * Appends one record: the directives of one acknowledgement, replayed together or not at all,
+     * and the reference's revision once they are applied.
+     */
+    synchronized void record(long revision, List<Directive> directives) throws IOException {
         JsonArray array = new JsonArray();
         directives.forEach(d -> array.add(DirectiveJson.toJson(d)));
-        journal.append(array.toString().getBytes(StandardCharsets.UTF_8));
+        JsonObject record = new JsonObject();
+        record.addProperty("revision", revision);
+        record.add("directives", array);
+        journal.append(record.toString().getBytes(StandardCharsets.UTF_8));
         recordsSinceCheckpoint++;
     }
 
@@ -147,6 +178,7 @@ final class ReferenceStore {
         try {
             OWLOntology copy = snapshot(reference);
             String mountedBy = reference.mountedBy();
+            long revision = reference.revision();
             long next;
             synchronized (this) {
                 next = Math.max(checkpointSeq, journalSeqs.get(journalSeqs.size() - 1)) + 1;
@@ -156,7 +188,7 @@ final class ReferenceStore {
                 lastCheckpointNanos = System.nanoTime();
                 writeMeta(mountedBy);
             }
-            background.execute(() -> finishCheckpoint(copy, next, mountedBy));
+            background.execute(() -> finishCheckpoint(copy, next, revision, mountedBy));
         } catch (IOException | RuntimeException e) {
             LOG.error("checkpoint of '{}' failed; its journal keeps growing until the next one", name, e);
             synchronized (this) {
@@ -165,7 +197,7 @@ final class ReferenceStore {
         }
     }
 
-    private void finishCheckpoint(OWLOntology copy, long seq, String mountedBy) {
+    private void finishCheckpoint(OWLOntology copy, long seq, long revision, String mountedBy) {
         try {
             writeCheckpoint(copy, checkpointFile(seq));
             List<Long> obsoleteJournals;
@@ -174,6 +206,7 @@ final class ReferenceStore {
                 obsoleteCheckpoint = checkpointSeq;
                 obsoleteJournals = journalSeqs.stream().filter(s -> s < seq).toList();
                 checkpointSeq = seq;
+                checkpointRevision = revision;
                 journalSeqs.removeAll(obsoleteJournals);
                 writeMeta(mountedBy);
             }
@@ -225,6 +258,7 @@ final class ReferenceStore {
         meta.addProperty("format", formatClass);
         meta.addProperty("mounted_by", mountedBy);
         meta.addProperty("checkpoint", checkpointSeq);
+        meta.addProperty("checkpoint_revision", checkpointRevision);
         JsonArray journals = new JsonArray();
         journalSeqs.forEach(journals::add);
         meta.add("journals", journals);

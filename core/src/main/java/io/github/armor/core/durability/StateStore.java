@@ -50,9 +50,12 @@ public final class StateStore {
         this.refsDir = durability.stateDir().resolve("refs");
     }
 
-    /** A reference as it was: its checkpoint loaded, the records to replay, its mount holder. */
+    /** A reference as it was: its checkpoint loaded, the records to replay, its mount holder, its revision. */
     public record Restorable(String name, OWLOntology ontology, Reference.Settings settings, String mountedBy,
-                             List<List<Directive>> records, ReferenceStore store) {}
+                             List<JournaledChange> records, long revision, ReferenceStore store) {}
+
+    /** One journal record: the directives of one acknowledged change and the revision they made. */
+    public record JournaledChange(long revision, List<Directive> directives) {}
 
     /**
      * Reads every reference found on disk (or, when restoring is off, deletes them for a clean
@@ -75,7 +78,7 @@ public final class StateStore {
                         OWLOntology ontology = files.loadTrusted(r.checkpoint(), importsDir);
                         restoreFormat(ontology, r.formatClass());
                         found.add(new Restorable(r.name(), ontology, r.settings(), r.mountedBy(), r.records(),
-                                r.store()));
+                                r.revision(), r.store()));
                     } catch (IOException | RuntimeException e) {
                         Path aside = durability.stateDir().resolve("unreadable").resolve(dir.getFileName()
                                 + "-" + System.currentTimeMillis());
@@ -157,14 +160,17 @@ public final class StateStore {
         }
     }
 
-    /** Records acknowledged directives; on failure the caller must undo them (nothing was acknowledged). */
-    public void record(Reference reference, List<Directive> directives) {
+    /**
+     * Records acknowledged directives with the revision they give the reference; on failure the
+     * caller must undo them (nothing was acknowledged).
+     */
+    public void record(Reference reference, long revision, List<Directive> directives) {
         ReferenceStore store = stores.get(reference.name());
         if (store == null) {
             throw new ArmorException(ExitCode.INTERNAL_ERROR, "reference '" + reference.name() + "' has no journal");
         }
         try {
-            store.record(directives);
+            store.record(revision, directives);
         } catch (IOException e) {
             throw new ArmorException(ExitCode.LOAD_FAILED, "cannot write the journal of '" + reference.name()
                     + "', change undone: " + e.getMessage(), e);

@@ -75,6 +75,8 @@ public final class Reference {
     // When the reasoner was last brought up to date and how long it took (the web view shows them).
     private volatile long lastReasoningEpochMs;
     private volatile long lastReasoningNanos;
+    // Read by event and subscription threads without the lock; written only under it.
+    private volatile long revision;
 
     /**
      * A reference over an ontology. Plain names take the ontology IRI of the settings (or the
@@ -190,6 +192,20 @@ public final class Reference {
 
     public void setMountedBy(String client) {
         mountedBy = client == null ? "" : client;
+    }
+
+    /**
+     * How many acknowledged changes the reference has had: 0 when it is loaded or created, one
+     * more for each journaled directive or atomic list that changed it. It survives restarts
+     * (the journal keeps it), so change events and subscription answers can be ordered by it.
+     */
+    public long revision() {
+        return revision;
+    }
+
+    /** Sets the revision: after an acknowledged change, or to the journal's at a restore. */
+    public void setRevision(long revision) {
+        this.revision = revision;
     }
 
     /** Queues or applies ontology changes according to the buffering mode. */

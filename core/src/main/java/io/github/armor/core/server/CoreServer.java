@@ -5,6 +5,8 @@ import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import io.github.armor.core.ArmorCore;
 import io.github.armor.core.command.Catalogue;
+import io.github.armor.core.events.ChangeEvent;
+import io.github.armor.core.events.CoreEvent;
 import io.github.armor.core.view.ReferenceViews;
 import java.io.EOFException;
 import java.io.IOException;
@@ -20,6 +22,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Consumer;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -33,6 +36,10 @@ import org.slf4j.LoggerFactory;
  * {@code {"id", "op": "catalogue"}}, answered {@code {"id", "catalogue": {...}}} (see {@link Catalogue}), and
  * the read-only {@code {"id", "op": "view", "view": {"name", ...}}} of the web page, answered
  * {@code {"id", "view": {...}}} (see {@link ReferenceViews}).
+ *
+ * <p>Events: the core also sends every connection frames nobody asked for, without an {@code id}
+ * and with an {@code "event"} key: {@code "change"} for each acknowledged change of a reference
+ * ({@link ChangeEvent}), in revision order per reference.
  */
 public final class CoreServer {
     private static final Logger LOG = LoggerFactory.getLogger(CoreServer.class);
@@ -68,6 +75,17 @@ public final class CoreServer {
 
     private void serveConnection(SocketChannel connection) {
         Object writeLock = new Object();
+        Consumer<CoreEvent> pushEvent = event -> {
+            String frame = event.toJson().toString();
+            try {
+                synchronized (writeLock) {
+                    writeFrame(connection, frame);
+                }
+            } catch (IOException e) {
+                LOG.debug("could not send an event: {}", e.toString());
+            }
+        };
+        core.events().addListener(pushEvent);
         try (connection) {
             while (true) {
                 JsonObject request = JsonParser.parseString(readFrame(connection)).getAsJsonObject();
@@ -86,6 +104,8 @@ public final class CoreServer {
             LOG.debug("client disconnected");
         } catch (IOException | RuntimeException e) {
             LOG.warn("connection closed: {}", e.toString());
+        } finally {
+            core.events().removeListener(pushEvent);
         }
     }
 

@@ -58,6 +58,7 @@ final class Overview {
     private JsonObject summary(Reference reference, long waitMs) {
         JsonObject summary = new JsonObject();
         summary.addProperty("name", reference.name());
+        summary.addProperty("revision", reference.revision());
         summary.addProperty("source", reference.source() == null ? "" : reference.source());
         summary.addProperty("reasoner", reference.reasonerName());
         summary.addProperty("buffered_manipulation", reference.settings().bufferedManipulation());

@@ -1,0 +1,17 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.events;
+
+import com.google.gson.JsonObject;
+
+/**
+ * Something the core tells its clients without being asked: a change of a reference or a new
+ * answer of a subscription. On the socket it is a frame without an {@code id} whose
+ * {@code "event"} key names the kind.
+ */
+public interface CoreEvent {
+    /** The reference the event is about. */
+    String reference();
+
+    /** The frame sent to clients. */
+    JsonObject toJson();
+}
