@@ -8,8 +8,8 @@ const TABS = ['graph', 'classes', 'individuals', 'query', 'recent'];
 const PAGE_SIZE = 50;
 const PALETTE = ['#4e79a7', '#f28e2b', '#59a14f', '#e15759', '#76b7b2', '#edc948', '#b07aa1',
   '#ff9da7', '#9c755f', '#7f8c8d', '#2f6690', '#c0392b'];
-// Above this many nodes the force-directed layout would keep the page busy for seconds.
-const FORCE_LAYOUT_MAX_NODES = 1500;
+// Above this many nodes even the layout worker would take minutes: a grid instead.
+const FORCE_LAYOUT_MAX_NODES = 2000;
 
 const state = {
   overview: [],
@@ -21,6 +21,7 @@ const state = {
   individualSearch: '',
   individualOffset: 0,
   openClasses: new Set(),
+  closedClasses: new Set(),
   graphChoice: null,   // {properties: [iri] | null for all, class, focus, limit}
   properties: [],      // the selected reference's object properties
   fetchedAt: 0,
@@ -35,7 +36,7 @@ function el(tag, attributes, ...children) {
     else if (name === 'text') node.textContent = value;
     else node.setAttribute(name, value === true ? '' : String(value));
   }
-  for (const child of children.flat()) {
+  for (const child of children.flat(Infinity)) {
     if (child === null || child === undefined) continue;
     node.append(child instanceof Node ? child : document.createTextNode(String(child)));
   }
@@ -43,6 +44,11 @@ function el(tag, attributes, ...children) {
 }
 
 const $ = (selector) => document.querySelector(selector);
+
+/** Replaces a container's children, leaving out the null ones (parts shown only sometimes). */
+function fill(container, ...children) {
+  container.replaceChildren(...children.flat(Infinity).filter((child) => child !== null && child !== undefined));
+}
 
 async function api(path, options) {
   const response = await fetch(path, options);
@@ -83,10 +89,17 @@ function clock(ms) {
   return at.toLocaleTimeString([], {hour12: false}) + '.' + String(at.getMilliseconds()).padStart(3, '0');
 }
 
+// A type keeps the colour it was first given for as long as the page is open.
+const colours = new Map();
+
 function colourOf(name) {
-  let hash = 0;
-  for (const c of name) hash = (hash * 31 + c.charCodeAt(0)) >>> 0;
-  return PALETTE[hash % PALETTE.length];
+  if (!colours.has(name)) colours.set(name, PALETTE[colours.size % PALETTE.length]);
+  return colours.get(name);
+}
+
+/** Axioms as the core writes them, with <full IRIs> shortened to their names for reading. */
+function readable(text) {
+  return text.replace(/<[^<>]*[#/]([^<>#/]+)>/g, '$1');
 }
 
 /** An entity as a link: kind 'class' or 'individual'; marked asserted or inferred when known. */
@@ -171,10 +184,10 @@ function leaseText(summary) {
 function renderReferenceList() {
   const list = $('#reference-list');
   if (!state.overview.length) {
-    list.replaceChildren(el('p', {className: 'muted', text: 'No reference is loaded.'}));
+    fill(list, el('p', {className: 'muted', text: 'No reference is loaded.'}));
     return;
   }
-  list.replaceChildren(...state.overview.map((r) => {
+  fill(list, ...state.overview.map((r) => {
     const badge = r.consistent ? el('span', {className: 'badge ok', text: 'consistent'})
       : el('span', {className: 'badge bad', text: 'INCONSISTENT'});
     const rows = [
@@ -214,10 +227,10 @@ function renderSummary() {
   if (summary.last_reasoning_at_ms) {
     parts.push(`last reasoning ${clock(summary.last_reasoning_at_ms)}, ${summary.last_reasoning_ms.toFixed(1)} ms`);
   }
-  $('#summary').replaceChildren(el('strong', {text: summary.name}), parts.join(' · '));
+  fill($('#summary'), el('strong', {text: summary.name}), parts.join(' · '));
   const banner = $('#inconsistency');
   if (!summary.consistent && banner.hidden) {
-    $('#explanation').replaceChildren(el('li', {className: 'muted', text: 'asking the reasoner…'}));
+    fill($('#explanation'), el('li', {className: 'muted', text: 'asking the reasoner…'}));
     consistencyRefresher.request();
   }
   banner.hidden = summary.consistent;
@@ -227,10 +240,11 @@ const consistencyRefresher = new Refresher(async () => {
   const list = $('#explanation');
   try {
     const answer = await api(referencePath('/consistency'));
-    list.replaceChildren(...(answer.explanation.length ? answer.explanation.map((axiom) => el('li', {text: axiom}))
+    fill(list, ...(answer.explanation.length ? answer.explanation.map((axiom) => el('li', {title: axiom,
+      text: readable(axiom)}))
       : [el('li', {text: answer.success ? 'no explanation found' : answer.description})]));
   } catch (error) {
-    list.replaceChildren(el('li', {className: 'error', text: String(error.message)}));
+    fill(list, el('li', {className: 'error', text: String(error.message)}));
   }
 });
 
@@ -246,10 +260,11 @@ function select(name, tab) {
     state.individualSearch = '';
     $('#individual-search').value = '';
     state.openClasses = new Set();
+    state.closedClasses = new Set();
     state.graphChoice = null;
     state.properties = [];
-    $('#class-detail').replaceChildren(el('p', {className: 'muted', text: 'Choose a class.'}));
-    $('#individual-detail').replaceChildren(el('p', {className: 'muted', text: 'Choose an individual.'}));
+    fill($('#class-detail'), el('p', {className: 'muted', text: 'Choose a class.'}));
+    fill($('#individual-detail'), el('p', {className: 'muted', text: 'Choose an individual.'}));
     $('#inconsistency').hidden = true;
   }
   const hash = `#/${encodeURIComponent(name)}/${state.tab}`;
@@ -273,6 +288,39 @@ function refreshSelected() {
 
 // ---------------------------------------------------------------- graph
 let graph = null;
+let layoutSettled = true;
+let layoutAsked = 0;
+// The force-directed layout runs in a worker (layout-worker.js): the page never waits for it.
+const layoutWorker = new Worker('/static/layout-worker.js');
+layoutWorker.onmessage = (event) => {
+  if (event.data.id !== layoutAsked || graph === null) return;  // a newer layout is on its way
+  graph.batch(() => {
+    for (const [id, position] of event.data.positions) {
+      const node = graph.getElementById(id);
+      if (node.nonempty()) node.position(position);
+    }
+  });
+  graph.fit(undefined, 30);
+  layoutSettled = true;
+};
+
+/** Lays the graph out again, from where its nodes are unless `randomize`. */
+function layOut(randomize) {
+  const count = graph.nodes().length;
+  layoutAsked += 1;
+  if (count > FORCE_LAYOUT_MAX_NODES) {
+    graph.layout({name: 'grid', fit: true, avoidOverlap: true}).run();
+    layoutSettled = true;
+    return;
+  }
+  layoutSettled = false;
+  const elements = graph.elements().map((e) => e.isNode()
+    ? {group: 'nodes', data: {id: e.id()}, position: {...e.position()}}
+    : {group: 'edges', data: {id: e.id(), source: e.data('source'), target: e.data('target')}});
+  // Fewer iterations as the graph grows: a large sample settles in seconds, not minutes.
+  layoutWorker.postMessage({id: layoutAsked, elements, randomize,
+    numIter: count <= 100 ? 3000 : count <= 400 ? 1500 : 600});
+}
 
 function graphChoice() {
   if (!state.graphChoice) state.graphChoice = {properties: null, class: '', focus: '', limit: 300};
@@ -284,7 +332,7 @@ async function loadProperties() {
   state.properties = reference.object_properties;
   const choice = graphChoice();
   const box = $('#graph-properties');
-  box.replaceChildren(el('legend', {text: 'Links'}), ...state.properties.map((p) => el('label', {},
+  fill(box, el('legend', {text: 'Links'}), ...state.properties.map((p) => el('label', {},
     el('input', {type: 'checkbox', name: 'property', value: p.iri,
       checked: choice.properties === null || choice.properties.includes(p.iri)}), ' ', p.name)));
 }
@@ -304,7 +352,7 @@ const graphRefresher = new Refresher(async () => {
   try {
     data = await api(referencePath('/graph?' + query));
   } catch (error) {
-    $('#graph-note').replaceChildren(el('span', {className: 'error', text: error.message}));
+    fill($('#graph-note'), el('span', {className: 'error', text: error.message}));
     return;
   }
   if (name !== state.selected) return;
@@ -343,24 +391,27 @@ function renderGraph(data) {
       style: [
         {selector: 'node', style: {
           'background-color': 'data(colour)', 'label': 'data(label)', 'text-wrap': 'wrap',
-          'font-size': 11, 'text-valign': 'bottom', 'text-margin-y': 4, 'width': 26, 'height': 26,
-          'color': '#1d2330', 'text-background-color': '#ffffff', 'text-background-opacity': 0.7}},
+          'font-size': 20, 'text-valign': 'bottom', 'text-margin-y': 4, 'width': 40, 'height': 40,
+          'color': '#1d2330', 'text-background-color': '#ffffff', 'text-background-opacity': 0.7,
+          'min-zoomed-font-size': 7}},
         {selector: 'edge', style: {
-          'width': 2, 'line-color': '#98a2b3', 'line-style': 'data(line)', 'curve-style': 'bezier',
+          'width': 3, 'line-color': '#98a2b3', 'line-style': 'data(line)', 'curve-style': 'bezier',
           'target-arrow-shape': 'data(arrow)', 'target-arrow-color': '#98a2b3', 'label': 'data(label)',
-          'font-size': 9, 'color': '#667085', 'text-rotation': 'autorotate'}},
+          'font-size': 14, 'color': '#667085', 'text-rotation': 'autorotate', 'min-zoomed-font-size': 7}},
         {selector: 'node:selected', style: {'border-width': 3, 'border-color': '#2458b3'}},
       ],
     });
     graph.on('tap', 'node', (event) => showIndividual(event.target.id()));
   }
+  // Links that come and go (someone moves to another room) leave the map where it is; only
+  // individuals that appear or go make a new layout, started from the current positions.
   const wanted = new Set(elements.map((e) => e.data.id));
-  let structureChanged = first;
+  let nodesChanged = first;
   graph.batch(() => {
     graph.elements().forEach((existing) => {
       if (!wanted.has(existing.id())) {
+        nodesChanged = nodesChanged || existing.isNode();
         existing.remove();
-        structureChanged = true;
       }
     });
     for (const element of elements) {
@@ -369,17 +420,12 @@ function renderGraph(data) {
         existing.data(element.data);
       } else {
         graph.add(element);
-        structureChanged = true;
+        nodesChanged = nodesChanged || element.group === 'nodes';
       }
     }
   });
-  if (structureChanged) {
-    const force = graph.nodes().length <= FORCE_LAYOUT_MAX_NODES;
-    graph.layout(force ? {name: 'cose', animate: false, randomize: first, fit: true, padding: 30,
-      nodeDimensionsIncludeLabels: true, idealEdgeLength: () => 90, nodeRepulsion: () => 9000}
-      : {name: 'grid', fit: true, avoidOverlap: true}).run();
-  }
-  $('#graph-legend').replaceChildren(...[...types].sort().map(([type, colour]) =>
+  if (nodesChanged) layOut(first);
+  fill($('#graph-legend'), ...[...types].sort().map(([type, colour]) =>
     el('span', {}, el('span', {className: 'swatch', style: `background:${colour}`}), type)));
 }
 
@@ -398,12 +444,16 @@ const classesRefresher = new Refresher(async () => {
   renderClassTree(hierarchy);
 });
 
+// Small hierarchies are shown whole; large ones open a class at a time.
+const OPEN_HIERARCHY_MAX_CLASSES = 200;
 let classChildren = new Map();
 let classByIri = new Map();
+let hierarchyOpen = false;
 
 function renderClassTree(hierarchy) {
   classChildren = new Map();
   classByIri = new Map();
+  hierarchyOpen = hierarchy.classes.length <= OPEN_HIERARCHY_MAX_CLASSES;
   const roots = [];
   for (const owlClass of hierarchy.classes) {
     classByIri.set(owlClass.iri, owlClass);
@@ -419,7 +469,7 @@ function renderClassTree(hierarchy) {
   const top = el('ul', {});
   appendClassItems(top, [{owlClass: {iri: 'owl:Thing', name: 'Thing', equivalents: [], unsatisfiable: false},
     asserted: true, children: roots}], new Set());
-  $('#class-tree').replaceChildren(heading, top);
+  fill($('#class-tree'), heading, top);
 }
 
 /** Appends one <li> per class; a class's children are built when it is opened (large hierarchies). */
@@ -437,7 +487,8 @@ function appendClassItems(list, items, ancestors) {
       list.append(el('li', {className: `leaf${selected ? ' selected' : ''}`, 'data-iri': owlClass.iri}, label));
       continue;
     }
-    const open = owlClass.iri === 'owl:Thing' || state.openClasses.has(owlClass.iri);
+    const open = owlClass.iri === 'owl:Thing' || state.openClasses.has(owlClass.iri)
+      || (hierarchyOpen && !state.closedClasses.has(owlClass.iri));
     const details = el('details', {'data-iri': owlClass.iri, open},
       el('summary', {'data-iri': owlClass.iri}, label));
     details.armorChildren = kids;
@@ -470,7 +521,7 @@ const classDetailRefresher = new Refresher(async () => {
   const frame = (title, lines) => [el('dt', {text: title}), el('dd', {},
     lines.length ? lines.map((line) => el('div', {className: 'manchester', text: line}))
       : el('span', {className: 'muted', text: 'none'}))];
-  panel.replaceChildren(
+  fill(panel,
     el('h3', {}, owlClass.name, owlClass.unsatisfiable ? el('span', {className: 'badge bad', text: 'unsatisfiable'})
       : null),
     el('dl', {},
@@ -503,7 +554,7 @@ const individualsRefresher = new Refresher(async () => {
   try {
     page = await api(referencePath('/individuals?' + query));
   } catch (error) {
-    body.replaceChildren(el('tr', {}, el('td', {colspan: 2, className: 'error', text: error.message})));
+    fill(body, el('tr', {}, el('td', {colspan: 2, className: 'error', text: error.message})));
     return;
   }
   if (name !== state.selected) return;
@@ -512,7 +563,7 @@ const individualsRefresher = new Refresher(async () => {
     ? `${page.offset + 1}–${last} of ${page.total.toLocaleString()}` : 'no individual matches';
   $('#individual-previous').disabled = page.offset === 0;
   $('#individual-next').disabled = last >= page.total;
-  body.replaceChildren(...page.individuals.map((individual) => el('tr', {'data-iri': individual.iri,
+  fill(body, ...page.individuals.map((individual) => el('tr', {'data-iri': individual.iri,
     'data-name': individual.name, className: individual.iri === state.individualIri ? 'selected' : ''},
   el('td', {text: individual.name}),
   el('td', {className: 'types'}, entityList(individual.types, 'class')))));
@@ -533,7 +584,7 @@ const individualDetailRefresher = new Refresher(async () => {
   const values = (entries, render) => entries.length ? entries.map((entry) => [
     el('dt', {text: entry.property.name}), el('dd', {}, render(entry.values))])
     : [el('dd', {className: 'muted', text: 'none'})];
-  panel.replaceChildren(
+  fill(panel,
     el('h3', {text: individual.name}),
     el('dl', {},
       el('dt', {text: 'Types'}), el('dd', {}, entityList(individual.types, 'class')),
@@ -568,13 +619,13 @@ function directiveFailure(answer) {
 
 async function askDl(expression) {
   const result = $('#dl-result');
-  result.replaceChildren(el('p', {className: 'muted', text: 'asking…'}));
+  fill(result, el('p', {className: 'muted', text: 'asking…'}));
   try {
     const answer = await postJson(referencePath('/dl'), {expression});
     const part = (title, reply, kind) => [el('h3', {text: title}), reply.success
       ? entityList(reply.items.map((item) => ({iri: item.replace(/^<|>$/g, ''), name: shortName(item)})), kind)
       : directiveFailure(reply)];
-    result.replaceChildren(...part('Instances', answer.instances, 'individual'),
+    fill(result, ...part('Instances', answer.instances, 'individual'),
       ...part('Subclasses', answer.subclasses, 'class'));
   } catch (error) {
     showError(result, error);
@@ -583,11 +634,11 @@ async function askDl(expression) {
 
 async function runSparql(query) {
   const result = $('#sparql-result');
-  result.replaceChildren(el('p', {className: 'muted', text: 'running…'}));
+  fill(result, el('p', {className: 'muted', text: 'running…'}));
   try {
     const answer = await postJson(referencePath('/sparql'), {query});
     if (!answer.success) {
-      result.replaceChildren(directiveFailure(answer));
+      fill(result, directiveFailure(answer));
       return;
     }
     const rows = [[]];
@@ -597,10 +648,12 @@ async function runSparql(query) {
     }
     const filled = rows.filter((row) => row.length);
     const columns = filled.length ? filled[0].map(([key]) => key) : [];
-    result.replaceChildren(
-      el('p', {className: 'muted', text: `${filled.length} row(s)${answer.timeout ? ', cut short by the time limit' : ''}`}),
+    fill(result,
+      el('p', {className: 'muted',
+        text: `${filled.length} row(s)${answer.timeout ? ', cut short by the time limit' : ''}`}),
       el('table', {}, el('thead', {}, el('tr', {}, columns.map((c) => el('th', {text: c})))),
-        el('tbody', {}, filled.map((row) => el('tr', {}, row.map(([, value]) => el('td', {text: value})))))));
+        el('tbody', {}, filled.map((row) => el('tr', {}, row.map(([, value]) => el('td', {title: value,
+          text: value.startsWith('<') ? shortName(value) : value})))))));
   } catch (error) {
     showError(result, error);
   }
@@ -616,11 +669,11 @@ const recentRefresher = new Refresher(async () => {
   try {
     recent = await api('/api/recent?' + query);
   } catch (error) {
-    body.replaceChildren(el('tr', {}, el('td', {colspan: 6, className: 'error', text: error.message})));
+    fill(body, el('tr', {}, el('td', {colspan: 6, className: 'error', text: error.message})));
     return;
   }
   if (name !== state.selected) return;
-  body.replaceChildren(...recent.directives.map((d) => el('tr', {},
+  fill(body, ...recent.directives.map((d) => el('tr', {},
     el('td', {text: clock(d.at_ms)}), el('td', {text: d.client || '(no name)'}), el('td', {text: d.command}),
     el('td', {className: 'manchester', text: d.args.join(', ')}),
     el('td', {className: d.success ? '' : 'fail', text: String(d.exit_code)}),
@@ -667,7 +720,8 @@ function onRevisions(table) {
     return;
   }
   const names = new Set([...Object.keys(before), ...Object.keys(table.references)]);
-  const changed = [...names].filter((name) => (before[name] || {}).revision !== (table.references[name] || {}).revision);
+  const revision = (references, name) => (references[name] || {}).revision;
+  const changed = [...names].filter((name) => revision(before, name) !== revision(table.references, name));
   if (!changed.length) return;
   overviewRefresher.request();
   if (changed.includes(state.selected)) {
@@ -699,9 +753,11 @@ function wire() {
     if (!(details instanceof HTMLDetailsElement)) return;
     if (details.open) {
       state.openClasses.add(details.dataset.iri);
+      state.closedClasses.delete(details.dataset.iri);
       fillClassChildren(details);
     } else {
       state.openClasses.delete(details.dataset.iri);
+      state.closedClasses.add(details.dataset.iri);
     }
   }, true);
   tree.addEventListener('click', (event) => {
@@ -771,6 +827,9 @@ function wire() {
     }
   }, 1000);
 }
+
+// For the browser tests and anyone at the console: the graph as cytoscape holds it.
+window.armorWeb = {graph: () => graph, settled: () => layoutSettled};
 
 document.addEventListener('DOMContentLoaded', () => {
   const tab = location.hash.slice(2).split('/')[1];

@@ -182,6 +182,23 @@ class ReferenceViewsTest {
         assertEquals(Map.of("Room", true, "OccupiedRoom", false), marked(kitchen.getAsJsonArray("types")));
     }
 
+    @ParameterizedTest
+    @ValueSource(strings = {"HERMIT", "PELLET", "JFACT"})
+    void mostSpecificTypesStaySoAsChangesComeIn(String reasoner) {
+        fixture.ok("live", "LOAD FILE", CoreFixture.ONTOLOGIES.resolve("robotics.owl").toString(), "", "false",
+                reasoner, "false");
+        view("{\"name\": \"individuals\", \"reference\": \"live\"}");
+        fixture.ok("live", "ADD OBJECTPROP IND", "isIn", "alice", "bedroom");
+        view("{\"name\": \"individuals\", \"reference\": \"live\"}");
+        fixture.ok("live", "ADD IND CLASS", "carol", "Person");
+        JsonObject bedroom = byName(view("{\"name\": \"individuals\", \"reference\": \"live\", \"search\": "
+                + "\"bedroom\"}").getAsJsonArray("individuals"), "bedroom");
+        assertEquals(Map.of("OccupiedRoom", false, "Room", true), marked(bedroom.getAsJsonArray("types")));
+        JsonObject graph = view("{\"name\": \"graph\", \"reference\": \"live\", \"class\": \"Room\"}");
+        assertEquals(List.of("OccupiedRoom"), names(byName(graph.getAsJsonArray("nodes"), "bedroom")
+                .getAsJsonArray("types")));
+    }
+
     @Test
     void individualDetailTellsAssertedFromInferredValues() {
         JsonObject robot = view("{\"name\": \"individual\", \"reference\": \"map\", \"individual\": \"robot1\"}");

@@ -55,8 +55,7 @@ final class IndividualsView {
             JsonObject item = ViewJson.entity(individual);
             Set<OWLClass> asserted = assertedTypes(reference, individual);
             Set<OWLClass> types = new LinkedHashSet<>(asserted);
-            types.addAll(ViewReads.inferred(reference, reasoner -> reasoner.getTypes(individual, true).entities()
-                    .filter(c -> !c.isOWLThing()).toList()).orElse(List.of()));
+            types.addAll(ViewReads.directTypes(reference, individual));
             item.add("types", typesJson(types, asserted));
             items.add(item);
         });

@@ -169,8 +169,7 @@ final class PropertyGraph {
     }
 
     private static List<OWLClass> mostSpecificTypes(Reference reference, OWLNamedIndividual individual) {
-        Set<OWLClass> types = new HashSet<>(ViewReads.inferred(reference, reasoner -> reasoner.getTypes(individual,
-                true).entities().filter(c -> !c.isOWLThing()).toList()).orElse(List.of()));
+        Set<OWLClass> types = new HashSet<>(ViewReads.directTypes(reference, individual));
         if (types.isEmpty()) {
             types.addAll(IndividualsView.assertedTypes(reference, individual));
         }

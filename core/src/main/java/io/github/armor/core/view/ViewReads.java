@@ -5,12 +5,17 @@ import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
+import java.util.HashSet;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 import java.util.function.Function;
+import java.util.stream.Collectors;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.reasoner.OWLReasoner;
 
 /**
@@ -98,6 +103,25 @@ final class ViewReads {
             }
             throw e;
         }
+    }
+
+    /**
+     * An individual's most specific inferred types: its direct types, less any that is a
+     * superclass of another of them (Openllet, realising incrementally, can answer a type
+     * together with its own subclass). Empty when the reasoner has no answer. The caller holds
+     * the reference.
+     */
+    static Set<OWLClass> directTypes(Reference reference, OWLNamedIndividual individual) {
+        return inferred(reference, reasoner -> {
+            Set<OWLClass> direct = reasoner.getTypes(individual, true).entities().filter(c -> !c.isOWLThing())
+                    .collect(Collectors.toCollection(HashSet::new));
+            Set<OWLClass> implied = new HashSet<>();
+            for (OWLClass type : direct) {
+                reasoner.getSuperClasses(type, false).entities().forEach(implied::add);
+            }
+            direct.removeAll(implied);
+            return direct;
+        }).orElse(Set.of());
     }
 
     private void checkStillLoaded(Reference reference) {
