@@ -113,8 +113,8 @@ class ArmorService(Node):
         if port == 0:
             return None
         if not 0 < port < 65536:
-            raise RuntimeError(f'parameter web_port must be 0 (off) or a TCP port from 1 to 65535, '
-                               f'got {port}')
+            raise RuntimeError('parameter web_port must be 0 (off) or a TCP port from 1 to '
+                               f'65535, got {port}')
         from armor_service.web import WebView
         from armor_service.web.server import WebViewError
         view = WebView(self._core, self._value('web_host'), port,
