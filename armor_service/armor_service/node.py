@@ -118,7 +118,7 @@ class ArmorService(Node):
         from armor_service.web import WebView
         from armor_service.web.server import WebViewError
         view = WebView(self._core, self._value('web_host'), port,
-                       request_timeout_s=self._request_timeout(), logger=self.get_logger())
+                       request_timeout_s=self._request_timeout, logger=self.get_logger())
         try:
             view.start()
         except WebViewError as error:

@@ -67,7 +67,7 @@ class LiveUpdates:
                 }
             wake = not self._scheduled
             self._scheduled = True
-        if wake:
+        if wake and not self._loop.is_closed():
             self._loop.call_soon_threadsafe(self._changed.set)
 
     def version(self, reference: Optional[str] = None) -> Any:
@@ -77,6 +77,12 @@ class LiveUpdates:
                 return self._events
             known = self._references.get(reference)
             return None if known is None else known['revision']
+
+    def consistent(self, reference: str) -> Optional[bool]:
+        """A reference's consistency after its last change (None: no change seen yet)."""
+        with self._lock:
+            known = self._references.get(reference)
+            return None if known is None else known['consistent']
 
     def table(self) -> str:
         with self._lock:

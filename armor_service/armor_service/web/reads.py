@@ -40,7 +40,7 @@ class ViewFailed(Exception):
 class CoreReads:
     """Blocking requests to the core, made awaitable on the web view's event loop."""
 
-    def __init__(self, core, timeout_s: Optional[float]):
+    def __init__(self, core, timeout_s: Callable[[], Optional[float]]):
         self._core = core
         self._timeout_s = timeout_s
         self._pool = concurrent.futures.ThreadPoolExecutor(
@@ -66,7 +66,7 @@ class CoreReads:
     async def _send(self, payload: Dict[str, Any]) -> Dict[str, Any]:
         loop = asyncio.get_running_loop()
         return await loop.run_in_executor(self._pool, self._core.request, payload,
-                                          self._timeout_s)
+                                          self._timeout_s())
 
     def close(self) -> None:
         self._pool.shutdown(wait=False, cancel_futures=True)

@@ -42,6 +42,7 @@ MAX_BODY_BYTES = 1 << 20
 OVERVIEW_MAX_AGE_S = 2.0
 REFERENCE_MAX_AGE_S = 30.0
 RECENT_MAX_AGE_S = 1.0
+EXPLANATION_MAX_AGE_S = 5.0
 # Exit codes of the core, as HTTP statuses.
 _STATUS = {205: 400, 206: 404, 207: 400, 208: 400, 211: 504, 215: 400, 216: 503, 217: 409,
            224: 404}
@@ -61,8 +62,13 @@ class WebViewError(RuntimeError):
 class WebView:
     """Serves the page for a node's core on host:port until stop()."""
 
-    def __init__(self, core, host: str, port: int, *, request_timeout_s: Optional[float],
-                 logger):
+    def __init__(self, core, host: str, port: int, *,
+                 request_timeout_s: Callable[[], Optional[float]], logger):
+        """Configure; nothing listens before start().
+
+        request_timeout_s() is the node's current wait per request (None: no limit), read at
+        each request as the node reads it for ROS clients.
+        """
         self._core = core
         self._host = host
         self._port = port
@@ -70,6 +76,8 @@ class WebView:
         self._timeout_s = request_timeout_s
         self._loop = asyncio.new_event_loop()
         self._live = LiveUpdates(self._loop)
+        # One bound method, added and later removed: the core tells listeners apart by identity.
+        self._on_event = self._live.on_event
         self._reads: Optional[CoreReads] = None
         self._runner: Optional[web.AppRunner] = None
         self._thread: Optional[threading.Thread] = None
@@ -86,7 +94,6 @@ class WebView:
 
     def start(self) -> str:
         """Bind and serve on a thread of its own; answers the page's URL."""
-        self._core.add_event_listener(self._live.on_event)
         outcome: list = []
         started = threading.Event()
         self._thread = threading.Thread(target=self._serve, args=(outcome, started),
@@ -97,15 +104,17 @@ class WebView:
             self._thread.join()
             raise WebViewError(f'the web view cannot listen on {self._host}:{self._port}: '
                                f'{outcome[0]}') from outcome[0]
+        self._core.add_event_listener(self._on_event)
         return self.url
 
     def stop(self) -> None:
         if self._thread is None or not self._thread.is_alive():
             return
+        self._core.remove_event_listener(self._on_event)
         closing = asyncio.run_coroutine_threadsafe(self._close(), self._loop)
         try:
             closing.result(timeout=5)
-        except Exception as error:  # noqa: B902 (whatever stopped it, the node is going down)
+        except Exception as error:  # whatever stopped it, the node is going down: say so only
             self._log.warning(f'web view: closing: {error}')
         self._loop.call_soon_threadsafe(self._loop.stop)
         self._thread.join(timeout=5)
@@ -114,7 +123,7 @@ class WebView:
         asyncio.set_event_loop(self._loop)
         try:
             self._loop.run_until_complete(self._open())
-        except Exception as error:  # noqa: B902 (reported by start())
+        except Exception as error:  # reported by start()
             outcome.append(error)
             self._loop.close()
             started.set()
@@ -254,8 +263,10 @@ class _Routes:
         async def explain() -> Dict[str, Any]:
             answer = await self._reads.directive(reference, 'QUERY', 'CONSISTENCY', '')
             return _directive_answer(answer, explanation=answer['queried_objects'])
-        return await self._shared(('consistency', reference), self._live.version(reference),
-                                  REFERENCE_MAX_AGE_S, explain)
+        # Explaining can take the reasoner seconds, holding the reference: while changes keep
+        # coming, one explanation serves EXPLANATION_MAX_AGE_S (a new one once consistency flips).
+        return await self._shared(('consistency', reference), self._live.consistent(reference),
+                                  EXPLANATION_MAX_AGE_S, explain)
 
     async def dl_query(self, request: web.Request) -> web.Response:
         reference = request.match_info['reference']

@@ -260,6 +260,26 @@ class ReferenceViewsTest {
     }
 
     @Test
+    void aLongViewLetsDirectivesInBetweenItsSlices() throws Exception {
+        fixture.ok("slow", "LOAD FILE", CoreFixture.ONTOLOGIES.resolve("robotics.owl").toString(), "", "false",
+                SlowTypesReasonerFactory.class.getName(), "false");
+        for (int i = 0; i < 60; i++) {
+            fixture.ok("slow", "ADD IND CLASS", "probe" + i, "Robot");
+        }
+        // A page of 65 individuals asks the reasoner 65 times or more: at least 650 ms in all.
+        java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newSingleThreadExecutor();
+        java.util.concurrent.Future<JsonObject> page = pool.submit(() -> view(
+                "{\"name\": \"individuals\", \"reference\": \"slow\", \"limit\": 100}"));
+        Thread.sleep(100);
+        assertFalse(page.isDone(), "the view should still be running");
+        fixture.ok("slow", "ADD IND CLASS", "late_robot", "Robot");
+        // The change got the reference between two slices, long before the view ended.
+        assertFalse(page.isDone(), "the change waited for the whole view");
+        assertEquals(65, page.get().getAsJsonArray("individuals").size());
+        pool.shutdown();
+    }
+
+    @Test
     void recentDirectivesAreNewestFirstWithClientCodeAndLatency() {
         fixture.runAs("robot_brain", "map", "QUERY IND CLASS", "Room");
         fixture.runAs("page", "map", "QUERY IND CLASS", "Room");
