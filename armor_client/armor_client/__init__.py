@@ -12,6 +12,8 @@
   ``with ref.mounted():``, ``with ref.batch() as batch:`` (one atomic list).
 - ``armor_client.aio``: ``AsyncArmor`` / ``AsyncReference``, the same methods for asyncio.
 - ``armor_client.armor_api``: ROS 1 armor_api's ``ArmorClient``, for porting old code.
+- ``ref.subscribe(query, callback)``, ``armor.changes(callback)`` (``armor_client.subscriptions``):
+  be told when an answer, or anything, changes; async iterators in ``armor_client.aio``.
 - ``ArmorTransport`` and ``directive``: raw ArmorDirectiveReq / ArmorDirectiveRes.
 """
 
@@ -25,6 +27,8 @@ _EXPORTS = {
     'Reasoner': 'armor_client.operations', 'SparqlRows': 'armor_client.operations',
     'Armor': 'armor_client.reference', 'Reference': 'armor_client.reference',
     'ArmorTransport': 'armor_client.transport', 'directive': 'armor_client.transport',
+    **{name: 'armor_client.subscriptions' for name in (
+        'AnswerChange', 'Change', 'ChangeWatch', 'Subscription')},
     **{name: 'armor_client.errors' for name in (
         'ArmorArgumentError', 'ArmorCallTimeout', 'ArmorCoreUnavailableError', 'ArmorError',
         'ArmorFileError', 'ArmorMountError', 'ArmorReasonerError', 'ArmorRolledBackError',

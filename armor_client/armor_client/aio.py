@@ -26,6 +26,7 @@ from armor_client.batch import BatchBase
 from armor_client.errors import ArmorMountError, error_for
 from armor_client.operations import Parser, ReferenceBase, SessionCommands, Words
 from armor_client.reference import default_client_name
+from armor_client.subscriptions import AsyncChanges, AsyncSubscription, Query
 from armor_client.transport import ArmorTransport, directive
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
 from rclpy.node import Node
@@ -104,6 +105,17 @@ class AsyncArmor(SessionCommands):
         """
         return await self._in_pool(self.transport.call_list, requests, timeout_s=self.timeout_s)
 
+    def changes(self, reference: Optional[str] = None) -> AsyncChanges:
+        """Every acknowledged change the node publishes, as an async iterator of Change.
+
+        Args:
+            reference: only this reference's changes (None: every reference's).
+
+        Returns:
+            AsyncChanges: ``async with armor.changes() as changes: async for change in ...``.
+        """
+        return AsyncChanges(self.transport, reference)
+
     async def close(self) -> None:
         """Release the worker threads and the transport (when this object created it)."""
         self._pool.shutdown(wait=True)
@@ -176,6 +188,20 @@ class AsyncReference(ReferenceBase):
             An empty AsyncBatch on this reference.
         """
         return AsyncBatch(self.armor, self.name)
+
+    def subscribe(self, query: Query, *, iris: Optional[bool] = None) -> AsyncSubscription:
+        """The changes of a query's answer as an async iterator; see Reference.subscribe.
+
+        Args:
+            query: a QUERY directive as words, a SPARQL SELECT or ASK, or an ArmorDirectiveReq.
+            iris: answers as IRIs (default: this reference's setting).
+
+        Returns:
+            AsyncSubscription: ``async with ref.subscribe(q) as changes: async for change in
+            changes``; the first AnswerChange is the whole answer.
+        """
+        return AsyncSubscription(self.armor, self.name, query,
+                                 self.answers.iris if iris is None else iris)
 
     async def _execute(self, words: Words, args: Sequence[Any], parse: Any) -> Any:
         return self._answer(await self.armor.call(self.name, *words, args), parse)

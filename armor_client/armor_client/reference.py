@@ -11,11 +11,12 @@
 
 import contextlib
 import os
-from typing import Any, Iterator, Optional, Sequence
+from typing import Any, Callable, Iterator, Optional, Sequence
 
 from armor_client.batch import Batch
 from armor_client.errors import ArmorMountError, error_for
 from armor_client.operations import Parser, ReferenceBase, SessionCommands, Words
+from armor_client.subscriptions import AnswerChange, Change, ChangeWatch, Query, Subscription
 from armor_client.transport import ArmorTransport, directive
 from armor_msgs.msg import ArmorDirectiveRes
 from rclpy.node import Node
@@ -83,6 +84,19 @@ class Armor(SessionCommands):
         return self.transport.call(
             directive(self.client_name, reference, command, primary, secondary, args),
             timeout_s=self.timeout_s)
+
+    def changes(self, callback: Callable[[Change], Any],
+                reference: Optional[str] = None) -> ChangeWatch:
+        """Be told of every acknowledged change, as the node publishes it on armor_changes.
+
+        Args:
+            callback: called with each Change (from a ROS thread, in order).
+            reference: only this reference's changes (None: every reference's).
+
+        Returns:
+            The ChangeWatch (close it, or use it in a with block).
+        """
+        return ChangeWatch(self.transport, callback, reference)
 
     def close(self) -> None:
         """Release the transport (when this object created it)."""
@@ -153,6 +167,27 @@ class Reference(ReferenceBase):
         """
         return Batch(self.armor.transport, self.armor.client_name, self.name,
                      self.armor.timeout_s)
+
+    def subscribe(self, query: Query, callback: Callable[[AnswerChange], Any], *,
+                  iris: Optional[bool] = None) -> Subscription:
+        """Be told whenever the answer to a query changes, inferred answers included.
+
+        Args:
+            query: a QUERY directive as words (``'QUERY IND CLASS OccupiedRoom'``; QUERY may be
+                left out), a SPARQL SELECT or ASK, or an ArmorDirectiveReq.
+            callback: called with the whole answer at once, then with an AnswerChange (what
+                appeared, what disappeared, at which revision) after each change that moved it.
+            iris: answers as IRIs (default: this reference's setting).
+
+        Returns:
+            The Subscription (close it, or use it in a with block).
+
+        Raises:
+            ArmorServiceInternalError: the node refused the query (205: not a query).
+        """
+        return Subscription(self.armor.transport, self.armor.client_name, self.name, query,
+                            callback, iris=self.answers.iris if iris is None else iris,
+                            timeout_s=self.armor.timeout_s)
 
     def _execute(self, words: Words, args: Sequence[Any], parse: Any) -> Any:
         return self._answer(self.armor.call(self.name, *words, args), parse)

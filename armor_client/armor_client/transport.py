@@ -54,6 +54,8 @@ class ArmorTransport:
                                              name='armor-client-spin')
             self._spinner.start()
         self.node: Node = node
+        self.namespace = namespace
+        self.service_wait_s = service_wait_s
         prefix = namespace.rstrip('/') + '/' if namespace else ''
         self._directive: Any = node.create_client(
             ArmorDirective, prefix + DIRECTIVE_SERVICE, qos_profile=SERVICE_QOS)

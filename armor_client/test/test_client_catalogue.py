@@ -63,8 +63,10 @@ def call_args(method: Any, overrides: dict) -> Tuple[list, dict]:
     return args, kwargs
 
 
-# Public methods that send no catalogue command of their own.
-NOT_COMMANDS = {'call', 'call_list', 'close', 'reference', 'batch', 'mounted'}
+# Public methods that send no catalogue command of their own (subscribe and changes use the
+# subscription services and the change topic).
+NOT_COMMANDS = {'call', 'call_list', 'close', 'reference', 'batch', 'mounted', 'subscribe',
+                'changes'}
 
 
 def command_methods(target: Any) -> List[str]:

@@ -19,6 +19,7 @@ from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service import wire
 from armor_service.core_process import CoreProcess, CoreUnavailable
 from armor_service.parameters import all_parameters, Parameter
+from armor_service.subscriptions import SubscriptionTopics
 import rclpy
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
@@ -27,7 +28,7 @@ from rclpy.node import Node
 
 
 class ArmorService(Node):
-    """Serves armor_interface_srv and armor_interface_serialized_srv; publishes armor_changes."""
+    """Serves ARMOR's two services; publishes armor_changes; serves subscriptions to answers."""
 
     def __init__(self):
         super().__init__('armor_service')
@@ -39,15 +40,17 @@ class ArmorService(Node):
         self._core = CoreProcess(
             self._core_jar(), settings, jvm_options=tuple(self._value('jvm_options')),
             start_timeout_s=self._value('core_start_timeout_s'), logger=self.get_logger(),
-            on_ready=self._preload)
-        # Before the core starts: the preload's LOAD is a change too.
-        self._changes = self.create_publisher(ArmorChange, CHANGE_TOPIC, CHANGE_QOS)
-        self._core.add_event_listener(self.on_core_event)
-        self._core.start()
+            on_ready=self._on_core_ready)
         # Each callback blocks until the core answers. A reentrant group on a multi-threaded
         # executor lets a slow REASON on one reference wait while queries on others (and on
         # the same one, which the core serialises per reference) are answered meanwhile.
         group = ReentrantCallbackGroup()
+        # Before the core starts: the preload's LOAD is a change too.
+        self._change_publisher = self.create_publisher(ArmorChange, CHANGE_TOPIC, CHANGE_QOS)
+        self._core.add_event_listener(self.on_core_event)
+        self._answer_topics = SubscriptionTopics(self, self._core, group,
+                                                 lambda: self._value('subscription_idle_s'))
+        self._core.start()
         self.create_service(ArmorDirective, DIRECTIVE_SERVICE, self.directive_callback,
                             qos_profile=SERVICE_QOS, callback_group=group)
         self.create_service(ArmorDirectiveList, LIST_SERVICE,
@@ -100,9 +103,10 @@ class ArmorService(Node):
     def on_core_event(self, event: dict) -> None:
         """Publish what the core announces (on its event thread, in the core's order)."""
         if event.get('event') == 'change':
-            self._changes.publish(wire.change_from_json(event))
+            self._change_publisher.publish(wire.change_from_json(event))
 
     def shutdown_core(self) -> None:
+        self._answer_topics.end_all()
         if self._web_view is not None:
             self._web_view.stop()
         self._core.stop()
@@ -138,6 +142,11 @@ class ArmorService(Node):
     def _request_timeout(self):
         seconds = self._value('request_timeout_s')
         return seconds if seconds > 0 else None
+
+    def _on_core_ready(self, send) -> None:
+        """Bring a new core to where the last one was: the preload, then the subscriptions."""
+        self._preload(send)
+        self._answer_topics.register_again(send)
 
     def _preload(self, send) -> None:
         """Load the preload file into a new core, before it takes any request."""

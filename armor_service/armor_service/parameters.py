@@ -122,6 +122,9 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
               'its changes wait for APPLY'),
     Parameter('preload_buffered_reasoner', 'boolean', False,
               'its reasoner sees changes only at REASON'),
+    Parameter('subscription_idle_s', 'double', 5.0,
+              "a subscription whose topic has had no subscriber this long ends (its client "
+              "went away)", read_only=False),
     Parameter('web_port', 'integer', 0,
               'TCP port of the live, read-only web view of every reference (0 = off; make run '
               'uses 8080; docs/web-view.md)'),

@@ -10,7 +10,8 @@ import json
 import socket
 import struct
 
-from armor_msgs.msg import ArmorChange, ArmorDirectiveReq, ArmorDirectiveRes, QueryItem
+from armor_msgs.msg import (ArmorAnswer, ArmorChange, ArmorDirectiveReq, ArmorDirectiveRes,
+                            QueryItem)
 from builtin_interfaces.msg import Time
 
 _HEADER = struct.Struct('>I')
@@ -79,6 +80,16 @@ def change_from_json(event: dict) -> ArmorChange:
         client_name=event['client_name'],
         directives=[directive_from_json(d) for d in event['directives']],
         exit_code=int(event['exit_code']), is_consistent=bool(event['is_consistent']),
+        stamp=stamp_from_ns(int(event['stamp_ns'])))
+
+
+def answer_from_json(subscription_id: str, sequence: int, event: dict) -> ArmorAnswer:
+    """An ArmorAnswer from the core's answer event, numbered by the node."""
+    return ArmorAnswer(
+        subscription_id=subscription_id, reference_name=event['reference'],
+        revision=int(event['revision']), sequence=sequence, added=list(event['added']),
+        removed=list(event['removed']), exit_code=int(event['exit_code']),
+        error_description=event['error_description'],
         stamp=stamp_from_ns(int(event['stamp_ns'])))
 
 

@@ -4,9 +4,9 @@
 A verb is a module: its docstring (the first line is the summary), ``add_arguments(parser)``,
 ``run(args) -> int``, and optionally ``TRAILING``, a word after which the command line goes to
 the verb unparsed as ``args.directive_args`` (``--`` for directive arguments, ``--ros-args``
-for ROS arguments). armor_client registers call, load, query, sparql, save, refs and shell;
-armor_service registers serve, so this package never imports the server. Another package
-adds a verb by declaring one more entry point in its setup.py.
+for ROS arguments). armor_client registers call, load, query, sparql, save, refs, shell and
+watch; armor_service registers serve, so this package never imports the server. Another
+package adds a verb by declaring one more entry point in its setup.py.
 """
 
 import argparse

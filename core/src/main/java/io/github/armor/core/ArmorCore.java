@@ -17,6 +17,7 @@ import io.github.armor.core.command.Rendering;
 import io.github.armor.core.durability.StateStore;
 import io.github.armor.core.events.ChangeEvent;
 import io.github.armor.core.events.EventFeed;
+import io.github.armor.core.events.Subscriptions;
 import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
@@ -52,6 +53,7 @@ public final class ArmorCore implements AutoCloseable {
     private final Map<String, Long> lastHeardFrom = new ConcurrentHashMap<>();
     private final StateStore state;
     private final EventFeed events = new EventFeed();
+    private final Subscriptions subscriptions = new Subscriptions(events, this::askSubscribed);
     // Replayed directives were journaled when first acknowledged: they must not be again.
     private final ThreadLocal<Boolean> replaying = ThreadLocal.withInitial(() -> false);
 
@@ -116,6 +118,7 @@ public final class ArmorCore implements AutoCloseable {
     /** Finishes writing state and releases the state directory; the core answers nothing afterwards. */
     @Override
     public void close() {
+        subscriptions.close();
         events.close();
         if (state != null) {
             state.close();
@@ -125,6 +128,49 @@ public final class ArmorCore implements AutoCloseable {
     /** Where acknowledged changes are announced: {@link ChangeEvent}s, and subscriptions' answers. */
     public EventFeed events() {
         return events;
+    }
+
+    /** Standing queries whose answers' changes are published on {@link #events()}. */
+    public Subscriptions subscriptions() {
+        return subscriptions;
+    }
+
+    /**
+     * Asks a subscription's query ({@link Subscriptions.Evaluator}) as {@link #execute} would, but
+     * only a QUERY, without logging it and without counting it as its client's activity (a standing
+     * query must not keep a mount lease alive).
+     */
+    private Subscriptions.Evaluation askSubscribed(Directive query, long unlessRevision) {
+        long[] revision = {-1};
+        try {
+            SizeLimits.check(query);
+            CommandSpec spec = commands.find(query.key()).orElse(null);
+            if (spec == null || spec.kind() != CommandKind.QUERY) {
+                throw new ArmorException(ExitCode.UNKNOWN_COMMAND, "only a query (a QUERY command) can be subscribed to; "
+                        + query.describe() + (spec == null ? " is not a command" : " is a " + spec.kind()
+                        .catalogueName()));
+            }
+            if (query.referenceName().isEmpty()) {
+                throw new ArmorException(ExitCode.NO_REFERENCE_NAME, "no reference name given for "
+                        + query.describe());
+            }
+            spec.checkArity(query.args().size());
+            Reference target = references.get(query.referenceName());
+            CommandContext context = context(query, target);
+            Response underLock = target.locked(config.lockWaitMs(), reference -> {
+                revision[0] = reference.revision();
+                return revision[0] == unlessRevision ? null : spec.handler().run(context);
+            });
+            return underLock == null ? null
+                    : new Subscriptions.Evaluation(revision[0], context.finishAfterRelease(underLock));
+        } catch (ArmorException e) {
+            return new Subscriptions.Evaluation(revision[0], Response.failure(e, consistencyOf(query)));
+        } catch (RuntimeException | LinkageError | StackOverflowError e) {
+            LOG.error("internal error on subscribed {}", query, e);
+            return new Subscriptions.Evaluation(revision[0], Response.failure(new ArmorException(
+                    ExitCode.INTERNAL_ERROR, "internal error on " + query.describe() + ": " + e),
+                    consistencyOf(query)));
+        }
     }
 
     /**

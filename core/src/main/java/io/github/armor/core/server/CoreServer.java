@@ -5,8 +5,10 @@ import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import io.github.armor.core.ArmorCore;
 import io.github.armor.core.command.Catalogue;
+import io.github.armor.core.events.AnswerEvent;
 import io.github.armor.core.events.ChangeEvent;
 import io.github.armor.core.events.CoreEvent;
+import io.github.armor.core.events.Subscriptions;
 import io.github.armor.core.view.ReferenceViews;
 import java.io.EOFException;
 import java.io.IOException;
@@ -18,6 +20,10 @@ import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ThreadFactory;
@@ -39,7 +45,16 @@ import org.slf4j.LoggerFactory;
  *
  * <p>Events: the core also sends every connection frames nobody asked for, without an {@code id}
  * and with an {@code "event"} key: {@code "change"} for each acknowledged change of a reference
- * ({@link ChangeEvent}), in revision order per reference.
+ * ({@link ChangeEvent}), in revision order per reference, and {@code "answer"} for what changed in
+ * a subscription's answer ({@link AnswerEvent}).
+ *
+ * <p>Subscriptions ({@link Subscriptions}): {@code {"id", "op": "subscribe", "subscription": ID,
+ * "directive": {...}[, "known": [...]]}} registers a standing query under the client's ID and is
+ * answered {@code {"id", "response": {...}, "revision": n}}: the query's first answer (a failed
+ * one registered nothing), whose "answer" event has already been sent. {@code {"id", "op":
+ * "unsubscribe", "subscription": ID}} is answered {@code {"id", "unsubscribed": bool}};
+ * {@code {"id", "op": "subscriptions"}} {@code {"id", "subscriptions": count}}. A connection's
+ * subscriptions end when it closes.
  */
 public final class CoreServer {
     private static final Logger LOG = LoggerFactory.getLogger(CoreServer.class);
@@ -86,11 +101,12 @@ public final class CoreServer {
             }
         };
         core.events().addListener(pushEvent);
+        Set<String> subscribed = ConcurrentHashMap.newKeySet();
         try (connection) {
             while (true) {
                 JsonObject request = JsonParser.parseString(readFrame(connection)).getAsJsonObject();
                 workers.execute(() -> {
-                    JsonObject reply = answer(request);
+                    JsonObject reply = answer(request, subscribed);
                     try {
                         synchronized (writeLock) {
                             writeFrame(connection, reply.toString());
@@ -106,10 +122,11 @@ public final class CoreServer {
             LOG.warn("connection closed: {}", e.toString());
         } finally {
             core.events().removeListener(pushEvent);
+            subscribed.forEach(core.subscriptions()::unsubscribe);
         }
     }
 
-    private JsonObject answer(JsonObject request) {
+    private JsonObject answer(JsonObject request, Set<String> subscribed) {
         JsonObject reply = new JsonObject();
         reply.add("id", request.get("id"));
         String op = request.has("op") ? request.get("op").getAsString() : "";
@@ -122,6 +139,13 @@ public final class CoreServer {
                 case "ping" -> reply.addProperty("pong", true);
                 case "catalogue" -> reply.add("catalogue", catalogue);
                 case "view" -> reply.add("view", views.answer(request.getAsJsonObject("view")));
+                case "subscribe" -> subscribe(request, reply, subscribed);
+                case "unsubscribe" -> {
+                    String subscription = request.get("subscription").getAsString();
+                    subscribed.remove(subscription);
+                    reply.addProperty("unsubscribed", core.subscriptions().unsubscribe(subscription));
+                }
+                case "subscriptions" -> reply.addProperty("subscriptions", core.subscriptions().count());
                 default -> reply.addProperty("error", "unknown op '" + op + "'");
             }
         } catch (RuntimeException | LinkageError | StackOverflowError e) {
@@ -130,6 +154,25 @@ public final class CoreServer {
             reply.addProperty("error", "request failed in the core: " + e);
         }
         return reply;
+    }
+
+    private void subscribe(JsonObject request, JsonObject reply, Set<String> subscribed) {
+        String id = request.get("subscription").getAsString();
+        List<String> known = null;
+        if (request.has("known") && request.get("known").isJsonArray()) {
+            known = new ArrayList<>();
+            for (var answer : request.getAsJsonArray("known")) {
+                known.add(answer.getAsString());
+            }
+        }
+        subscribed.add(id);
+        Subscriptions.Evaluation first = core.subscriptions().subscribe(id,
+                WireCodec.directive(request.getAsJsonObject("directive")), known);
+        if (!first.response().success() || first.response().timeout()) {
+            subscribed.remove(id);
+        }
+        reply.add("response", WireCodec.response(first.response()));
+        reply.addProperty("revision", first.revision());
     }
 
     private static String readFrame(SocketChannel channel) throws IOException {

@@ -1,0 +1,140 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""Watch a query's answer change (or every change of a reference) until Ctrl-C.
+
+  armor watch REF COMMAND [PRIMARY [SECONDARY]] -- ARGS...    (a QUERY: its answer)
+  armor watch REF                                             (every change of REF; - for all)
+
+With a QUERY, prints its answer now, then one line per answer that appears ("+ name") or
+disappears ("- name") with the revision it holds at, inferred answers included: the node asks
+the reasoner again after each change. Examples:
+  armor watch robotics QUERY IND CLASS -- OccupiedRoom
+  armor watch robotics QUERY SPARQL -- "SELECT ?who ?room WHERE { ?who :isIn ?room }"
+Without one, prints one line per acknowledged change: revision, client, directives.
+Lines starting with "!" report what went wrong: the query failing at a revision (e.g. 217,
+inconsistent), messages missed (the answer shown may then be incomplete).
+Exit status: 0 after Ctrl-C, 1 the node refused the query, 2 no service.
+"""
+
+import argparse
+import signal
+import threading
+from typing import Any
+
+from armor_client.cli.common import add_connection_arguments, connect, reporting_errors
+from armor_client.subscriptions import AnswerChange, Change
+from armor_client.transport import directive
+from armor_client.values import Value
+
+# Directive arguments follow a lone '--' (they may start with '-').
+TRAILING = '--'
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """Declare the options of armor watch.
+
+    Args:
+        parser: the verb's parser.
+    """
+    parser.add_argument('reference', metavar='REF', help='reference name ("-": every reference, '
+                        'when watching changes)')
+    parser.add_argument('words', nargs='*', metavar='COMMAND [PRIMARY [SECONDARY]]',
+                        help='a QUERY and its specs (none: watch every change of REF)')
+    parser.add_argument('--iri', action='store_true', help='show full IRIs, not short names')
+    add_connection_arguments(parser)
+
+
+@reporting_errors('watch')
+def run(args: argparse.Namespace) -> int:
+    """Watch until Ctrl-C (or SIGTERM).
+
+    Args:
+        args: the parsed command line (words after a lone "--" in args.directive_args).
+
+    Returns:
+        The exit status.
+    """
+    if len(args.words) > 3:
+        raise RuntimeError('at most COMMAND PRIMARY SECONDARY before "--"; put the arguments '
+                           f'after "--" (got {" ".join(args.words)})')
+    import rclpy
+    from rclpy.signals import SignalHandlerOptions
+    # Without rclpy's signal handlers Ctrl-C is a KeyboardInterrupt here, and the subscription
+    # is ended on the way out; SIGTERM too.
+    rclpy.init(signal_handler_options=SignalHandlerOptions.NO)
+    stop = threading.Event()
+    signal.signal(signal.SIGTERM, lambda *_: stop.set())
+    try:
+        with connect(args, iris=args.iri) as armor:
+            _watch(args, armor, stop)
+    except KeyboardInterrupt:
+        pass
+    finally:
+        rclpy.try_shutdown()
+    return 0
+
+
+def _watch(args: argparse.Namespace, armor: Any, stop: threading.Event) -> None:
+    if args.words:
+        command, primary, secondary = (args.words + ['', ''])[:3]
+        query = directive(armor.client_name, args.reference, command, primary, secondary,
+                          args.directive_args)
+        printer = _AnswerPrinter(args.reference, query)
+        with armor.reference(args.reference).subscribe(query, printer.print):
+            _wait(stop)
+    else:
+        reference = None if args.reference == '-' else args.reference
+        with armor.changes(_print_change, reference):
+            _say(f'# watching the changes of {reference or "every reference"} (Ctrl-C ends)')
+            _wait(stop)
+
+
+class _AnswerPrinter:
+    """Prints a subscription's answer, then its changes."""
+
+    def __init__(self, reference: str, query: Any):
+        self._title = ' '.join(word for word in (
+            reference, query.command, query.primary_command_spec, query.secondary_command_spec,
+            *query.args) if word)
+
+    def print(self, change: AnswerChange) -> None:
+        if change.initial:
+            count = len(change.answer)
+            _say(f'# {self._title}: {count} answer{"" if count == 1 else "s"} at revision '
+                 f'{change.revision} (Ctrl-C ends)')
+            for answer in change.answer:
+                _say(_text(answer))
+            return
+        if change.missed:
+            _say(f'! {change.missed} update(s) missed before revision {change.revision}: the '
+                 'answer shown may be incomplete')
+        if change.exit_code:
+            _say(f'! revision {change.revision}: error {change.exit_code}: {change.error}')
+        for answer in change.removed:
+            _say(f'- {_text(answer)}  (revision {change.revision})')
+        for answer in change.added:
+            _say(f'+ {_text(answer)}  (revision {change.revision})')
+
+
+def _print_change(change: Change) -> None:
+    if change.missed:
+        first, last = change.missed[0], change.missed[-1]
+        _say(f'! {change.reference}: revision{"s" if last > first else ""} '
+             f'{first}{f"-{last}" if last > first else ""} missed')
+    consistency = '' if change.consistent else '  (inconsistent)'
+    _say(f'{change.reference}  revision {change.revision}  {change.client or "-"}: '
+         f'{change.describe()}{consistency}')
+
+
+def _text(value: Value) -> str:
+    if isinstance(value, bool):
+        return 'true' if value else 'false'
+    return str(value)
+
+
+def _wait(stop: threading.Event) -> None:
+    while not stop.wait(0.5):
+        pass
+
+
+def _say(line: str) -> None:
+    print(line, flush=True)

@@ -1,0 +1,80 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""armor watch at a terminal (issue 12): one terminal watches, another changes the ontology."""
+
+import signal
+import subprocess
+import sys
+import time
+
+from conftest import ONTOLOGIES
+import pytest
+from terminal import Terminal
+
+ROBOTICS = str(ONTOLOGIES / 'robotics.owl')
+
+
+def ctrl_c(terminal: Terminal) -> None:
+    """What the terminal does on Ctrl-C (the test's pseudo-terminal is not the process's own)."""
+    terminal.process.send_signal(signal.SIGINT)
+
+
+def armor_call(*words: str) -> subprocess.CompletedProcess:
+    """`armor call ...` from another process, as in a second terminal."""
+    return subprocess.run([sys.executable, '-m', 'armor_client.cli', 'call', *words],
+                          capture_output=True, text=True, timeout=120)
+
+
+@pytest.fixture
+def watched(call):
+    assert call('watched', 'LOAD FILE', ROBOTICS, '', 'false', 'HERMIT', 'false').success
+    yield 'watched'
+    call('watched', 'DROP')
+
+
+def test_watch_prints_the_answer_then_each_room_as_it_becomes_and_stops_being_occupied(watched):
+    terminal = Terminal(['-m', 'armor_client.cli', 'watch', watched, 'QUERY', 'IND', 'CLASS',
+                         '--', 'OccupiedRoom'])
+    terminal.wait_for('kitchen')
+    assert f'# {watched} QUERY IND CLASS OccupiedRoom: 1 answer at revision 0 (Ctrl-C ends)\r\n' \
+        'kitchen' in terminal.screen, terminal.screen
+
+    moved = armor_call(watched, 'ADD', 'OBJECTPROP', 'IND', '--', 'isIn', 'alice', 'bedroom')
+    assert moved.returncode == 0, moved.stderr
+    terminal.wait_for('+ bedroom  (revision 1)')
+    left = armor_call(watched, 'REMOVE', 'OBJECTPROP', 'IND', '--', 'isIn', 'alice', 'bedroom')
+    assert left.returncode == 0, left.stderr
+    terminal.wait_for('- bedroom  (revision 2)')
+    assert '+ kitchen' not in terminal.screen and '- kitchen' not in terminal.screen
+
+    ctrl_c(terminal)
+    assert terminal.close() == 0, terminal.screen
+    assert 'Traceback' not in terminal.screen, terminal.screen
+
+
+def test_watch_refuses_what_is_not_a_query(watched):
+    terminal = Terminal(['-m', 'armor_client.cli', 'watch', watched, 'ADD', 'IND', 'CLASS',
+                         '--', 'robot9', 'Robot'])
+    terminal.wait_for('error 205')
+    assert terminal.close() == 1, terminal.screen
+
+
+def test_watch_without_a_query_prints_each_change(watched):
+    terminal = Terminal(['-m', 'armor_client.cli', 'watch', watched])
+    terminal.wait_for('# watching the changes of watched')
+    deadline = time.monotonic() + 60
+    robot = 0
+    while True:  # the watch joins the topic in a moment: change until it has printed one
+        robot += 1
+        assert armor_call(watched, 'ADD', 'IND', 'CLASS', '--', f'r{robot}', 'Robot').returncode == 0
+        try:
+            terminal.wait_for(f'{watched}  revision {robot}  armor_cli: ADD IND CLASS r{robot} '
+                              'Robot', timeout_s=1.0)
+            break
+        except AssertionError:
+            assert time.monotonic() < deadline, terminal.screen
+    moved = armor_call(watched, 'ADD', 'OBJECTPROP', 'IND', '--', 'isIn', 'alice', 'bedroom')
+    assert moved.returncode == 0
+    terminal.wait_for(f'{watched}  revision {robot + 1}  armor_cli: ADD OBJECTPROP IND isIn alice '
+                      'bedroom')
+    ctrl_c(terminal)
+    assert terminal.close() == 0, terminal.screen
