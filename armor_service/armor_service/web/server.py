@@ -10,7 +10,7 @@ Routes (all read-only; none changes an ontology):
   GET  /api/references/{ref}/class?iri=      one class in detail
   GET  /api/references/{ref}/individuals?search=&offset=&limit=
   GET  /api/references/{ref}/individual?iri=
-  GET  /api/references/{ref}/graph?property=&property=&class=&focus=&limit=
+  GET  /api/references/{ref}/graph?property=&property=&class=&focus=&limit= (no property: all)
   GET  /api/references/{ref}/consistency     QUERY CONSISTENCY: the explanation when inconsistent
   GET  /api/recent?reference=&limit=&all=    the last directives (all=1: the page's own too)
   POST /api/references/{ref}/dl              {"expression"}: QUERY IND DL and QUERY CLASS DL
@@ -250,12 +250,13 @@ class _Routes:
                                                     'individual': _entity(request)})
 
     async def graph(self, request: web.Request) -> web.Response:
-        return await self._reference_view(request, {
-            'name': 'graph', 'properties': [_bracketed(p) for p in request.query.getall(
-                'property', []) if p],
-            'class': _bracketed(request.query.get('class', '')),
-            'focus': _bracketed(request.query.get('focus', '')),
-            'limit': _integer(request, 'limit', 300)})
+        view = {'name': 'graph', 'class': _bracketed(request.query.get('class', '')),
+                'focus': _bracketed(request.query.get('focus', '')),
+                'limit': _integer(request, 'limit', 300)}
+        if 'property' in request.query:
+            # property= alone (none chosen) follows no property; no property parameter, all.
+            view['properties'] = [_bracketed(p) for p in request.query.getall('property') if p]
+        return await self._reference_view(request, view)
 
     async def consistency(self, request: web.Request) -> web.Response:
         reference = request.match_info['reference']

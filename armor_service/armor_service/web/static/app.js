@@ -342,9 +342,9 @@ const graphRefresher = new Refresher(async () => {
   if (!state.properties.length) await loadProperties();
   const choice = graphChoice();
   const query = new URLSearchParams();
-  for (const p of choice.properties === null ? state.properties.map((x) => x.iri) : choice.properties) {
-    query.append('property', p);
-  }
+  const properties = choice.properties === null ? state.properties.map((x) => x.iri) : choice.properties;
+  for (const p of properties) query.append('property', p);
+  if (!properties.length) query.append('property', '');  // none ticked: links by no property
   if (choice.class) query.set('class', choice.class);
   if (choice.focus) query.set('focus', choice.focus);
   query.set('limit', choice.limit);

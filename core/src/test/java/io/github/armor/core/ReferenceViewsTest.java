@@ -245,6 +245,11 @@ class ReferenceViewsTest {
         }
         assertFalse(map.get("truncated").getAsBoolean());
 
+        JsonObject none = view("{\"name\": \"graph\", \"reference\": \"map\", \"properties\": []}");
+        assertEquals(5, none.getAsJsonArray("nodes").size());
+        assertEquals(0, none.getAsJsonArray("edges").size());
+        // Every property when none is named: connectedTo (2, both ways), isIn (2), contains (2, inferred).
+        assertEquals(6, view("{\"name\": \"graph\", \"reference\": \"map\"}").getAsJsonArray("edges").size());
         JsonObject isIn = view("{\"name\": \"graph\", \"reference\": \"map\", \"properties\": [\"isIn\"]}");
         assertEquals(5, isIn.getAsJsonArray("nodes").size());
         assertEquals(2, isIn.getAsJsonArray("edges").size());

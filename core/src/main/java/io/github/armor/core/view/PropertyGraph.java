@@ -48,7 +48,7 @@ final class PropertyGraph {
                          OWLNamedIndividual focus) {}
 
     /**
-     * @param propertyNames the object properties to follow (none: every one)
+     * @param propertyNames the object properties to follow (null: every one; empty: none)
      * @param className     only instances of this class, asserted or inferred (empty: every individual)
      * @param focusName     grow the sample from this individual (empty: from the first by name)
      * @param limit         the most individuals shown
@@ -94,11 +94,11 @@ final class PropertyGraph {
 
     private static Scope scope(Reference reference, List<String> propertyNames, String className, String focusName) {
         List<OWLObjectProperty> properties = new ArrayList<>();
-        if (propertyNames.isEmpty()) {
+        if (propertyNames == null) {
             reference.ontology().objectPropertiesInSignature(Imports.INCLUDED).filter(p -> !p.isBuiltIn())
                     .sorted(ViewJson.BY_NAME).forEach(properties::add);
         }
-        for (String name : propertyNames) {
+        for (String name : propertyNames == null ? List.<String>of() : propertyNames) {
             properties.add(known(reference, EntityType.OBJECT_PROPERTY, name));
         }
         List<OWLNamedIndividual> candidates;

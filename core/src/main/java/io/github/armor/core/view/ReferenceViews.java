@@ -22,7 +22,8 @@ import java.util.function.ToLongFunction;
  *   <li>{@code class} {reference, class, limit}: one class in detail;
  *   <li>{@code individuals} {reference, search, offset, limit}: a page of individuals ({@link IndividualsView});
  *   <li>{@code individual} {reference, individual}: one individual in detail;
- *   <li>{@code graph} {reference, properties, class, focus, limit}: a property graph ({@link PropertyGraph});
+ *   <li>{@code graph} {reference, properties (absent: all), class, focus, limit}: a property graph
+ *       ({@link PropertyGraph});
  *   <li>{@code recent} {reference, limit, exclude_clients}: the last directives ({@link RecentDirectives}).
  * </ul>
  */
@@ -77,7 +78,8 @@ public final class ReferenceViews {
                             Integer.MAX_VALUE), ViewJson.number(request, "limit", 50, 1, MAX_PAGE));
             case "individual" -> individuals.detail(ViewJson.text(request, "reference"),
                     ViewJson.text(request, "individual"));
-            case "graph" -> graph.graph(ViewJson.text(request, "reference"), ViewJson.texts(request, "properties"),
+            case "graph" -> graph.graph(ViewJson.text(request, "reference"),
+                    request.has("properties") ? ViewJson.texts(request, "properties") : null,
                     ViewJson.optionalText(request, "class", ""), ViewJson.optionalText(request, "focus", ""),
                     ViewJson.number(request, "limit", 300, 1, MAX_GRAPH_NODES));
             case "recent" -> recent.view(ViewJson.optionalText(request, "reference", ""),
