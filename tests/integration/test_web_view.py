@@ -282,7 +282,12 @@ def test_ten_thousand_individuals_are_paged_and_found_by_name(web_node, page):
     page.fill('#individual-search', 'bot7777')
     expect(count).to_have_text('1–1 of 1')
     expect(page.locator('tr[data-name="bot7777"] a.inferred')).to_have_text('RobotInRoom')
+    page.screenshot(path=str(ARTIFACTS / 'ten-thousand-individuals.png'))
+
+    # Dropped by a ROS client, the reference leaves the open page.
     assert call(web_node, 'web_big', 'DROP').success
+    expect(page.locator('.card[data-name="web_big"]')).to_have_count(0, timeout=SHOWN_WITHIN_MS)
+    expect(page.locator('#gone')).to_contain_text('"web_big" is no longer loaded')
 
 
 def http(node, path, *, method='GET', body=None, headers=None):

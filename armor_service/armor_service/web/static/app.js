@@ -165,6 +165,10 @@ const overviewRefresher = new Refresher(async () => {
     const wanted = decodeURIComponent(location.hash.slice(2).split('/')[0] || '');
     select(state.overview.some((r) => r.name === wanted) ? wanted : state.overview[0].name, null);
   } else if (state.selected && !state.overview.some((r) => r.name === state.selected)) {
+    const gone = $('#gone');
+    gone.textContent = `Reference "${state.selected}" is no longer loaded (it was dropped). `
+      + (state.overview.length ? 'Choose another on the left.' : '');
+    gone.hidden = false;
     state.selected = null;
     $('#reference').hidden = true;
   }
@@ -270,6 +274,7 @@ function select(name, tab) {
   const hash = `#/${encodeURIComponent(name)}/${state.tab}`;
   if (location.hash !== hash) history.replaceState(null, '', hash);
   $('#reference').hidden = false;
+  $('#gone').hidden = true;
   for (const button of document.querySelectorAll('.tabs button')) {
     button.setAttribute('aria-selected', String(button.dataset.tab === state.tab));
   }
