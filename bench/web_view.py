@@ -3,10 +3,14 @@
 page holds after a long run of changes, and what open pages cost the robot's ROS clients.
 
     python bench/web_view.py [--changes 100] [--soak-minutes 10] [--pages 5]
-                             [--phase-seconds 30] [--json FILE]
+                             [--phase-seconds 30] [--individuals N] [--parts latency,cost,soak]
+                             [--json FILE]
 
 Starts an ARMOR node (robotics.owl preloaded as "robotics", PELLET, the web view on a free
-port) and drives Debian's chromium with Playwright, side by side in one run:
+port) and drives Debian's chromium with Playwright, side by side in one run. With
+--individuals N every part runs on a reference of N individuals instead (robotics' TBox and
+individuals, N/5 rooms and 4N/5 robots in them, PELLET): the heavy case, where each of the
+pages' refreshes reads hundreds of individuals under the reference's lock.
 
 1. Change -> page latency, measured in the browser: a page shows the individuals table with
    bedroom; a ROS client moves alice into bedroom and out again, `--changes` times. A
@@ -17,9 +21,10 @@ port) and drives Debian's chromium with Playwright, side by side in one run:
    alice every 100 ms. Every minute the changes pause for one probe change whose latency is
    measured as in 1 (a page that fell behind shows it late); JS heap (after a forced GC), DOM
    nodes and event listeners of each page, and the node's resident memory, are sampled.
-3. Cost of open pages: a ROS client's round trips (QUERY IND CLASS OccupiedRoom, and REPLACE
-   OBJECTPROP IND moving alice) with no page open and with `--pages` pages open, each switching
-   tab every pass (every tab's fetches) and reloading every fifth pass; four phases of
+3. Cost of open pages: a ROS client's round trips (QUERY CLASS IND alice true, her most
+   specific types, and REPLACE OBJECTPROP IND moving her) with no page open and with `--pages`
+   pages open, each switching tab every pass (every tab's fetches) and reloading every fifth
+   pass, and all refreshing what they show after each of the client's moves; four phases of
    `--phase-seconds` alternate off/on/off/on so that the machine's noise falls on both.
    Ratio = p50 with pages / p50 without. The pages' browser runs on the same 2 cores.
 """
@@ -38,6 +43,9 @@ from harness import REPO, BenchNode, CoreSnapshot, latency_summary, peak_rss_mib
 
 sys.path.insert(0, str(REPO / 'tests' / 'integration'))
 from web_browser import free_port, launch  # noqa: E402  (the tests' browser set-up)
+
+# The reference every part reads and changes: robotics, or the large one of --individuals.
+REFERENCE = 'robotics'
 
 ROOMS = ('bedroom', 'corridor1')
 TABS = ('graph', 'classes', 'individuals', 'recent')
@@ -78,7 +86,7 @@ class Mover:
         with self.lock:
             new, old = (ROOMS[1], ROOMS[0]) if self.inside else (ROOMS[0], ROOMS[1])
             sent = time.time() * 1000
-            answer = self.node.call('robotics', 'REPLACE OBJECTPROP IND', 'isIn', 'alice', new,
+            answer = self.node.call(REFERENCE, 'REPLACE OBJECTPROP IND', 'isIn', 'alice', new,
                                     old)
             if not answer.success:
                 raise RuntimeError(f'move failed: {answer.error_description}')
@@ -88,8 +96,12 @@ class Mover:
 
 def open_individuals(context, url: str):
     page = context.new_page()
-    page.goto(url + '#/robotics/individuals')
+    page.goto(url + f'#/{REFERENCE}/individuals')
+    # bedroom is on the first page of robotics; a large reference is searched for it.
+    page.fill('#individual-search', 'bedroom')
     page.wait_for_selector('tr[data-name="bedroom"] td.types')
+    page.wait_for_function(
+        '() => document.querySelectorAll("#individuals-table tbody tr").length === 1')
     page.evaluate(OBSERVER)
     return page
 
@@ -127,7 +139,7 @@ def page_metrics(cdp) -> Dict[str, float]:
 def soak(browser, url: str, node: BenchNode, mover: Mover, minutes: float) -> Dict:
     context = browser.new_context(viewport={'width': 1400, 'height': 900})
     graph = context.new_page()
-    graph.goto(url + '#/robotics/graph')
+    graph.goto(url + f'#/{REFERENCE}/graph')
     graph.wait_for_selector('#graph-note:has-text("links")')
     table = open_individuals(context, url)
     sessions = {'graph': context.new_cdp_session(graph),
@@ -178,7 +190,8 @@ def round_trips(node: BenchNode, mover: Mover, stop: threading.Event) -> Dict[st
     times: Dict[str, List[float]] = {'QUERY': [], 'REPLACE': []}
     while not stop.is_set():
         begun = time.perf_counter()
-        node.call('robotics', 'QUERY IND CLASS', 'OccupiedRoom')
+        # Alice's most specific types: a reasoner's answer, a few names long.
+        node.call(REFERENCE, 'QUERY CLASS IND', 'alice', 'true')
         times['QUERY'].append(time.perf_counter() - begun)
         begun = time.perf_counter()
         mover.move()
@@ -204,7 +217,7 @@ def cost_of_pages(browser, url: str, node: BenchNode, mover: Mover, pages: int,
             context = browser.new_context(viewport={'width': 1400, 'height': 900})
             for _ in range(pages):
                 page = context.new_page()
-                page.goto(url + '#/robotics/graph')
+                page.goto(url + f'#/{REFERENCE}/graph')
                 open_pages.append(page)
             open_pages[-1].wait_for_selector('#graph-note:has-text("links")')
         result: Dict[str, Dict[str, List[float]]] = {}
@@ -253,8 +266,13 @@ def main() -> int:
     parser.add_argument('--pages', type=int, default=5)
     parser.add_argument('--phase-seconds', type=float, default=30.0,
                         help='length of each of the 4 phases of the cost measurement')
+    parser.add_argument('--individuals', type=int, default=0,
+                        help='run on a reference of this many individuals (0: robotics)')
+    parser.add_argument('--parts', default='latency,cost,soak')
     parser.add_argument('--json', type=pathlib.Path)
     options = parser.parse_args()
+    parts = set(options.parts.split(','))
+    global REFERENCE
     from playwright.sync_api import sync_playwright
     with tempfile.TemporaryDirectory(prefix='armor-bench-web-') as scratch_dir:
         scratch = pathlib.Path(scratch_dir)
@@ -262,19 +280,33 @@ def main() -> int:
         node = BenchNode(scratch, CoreSnapshot(scratch), {'web_port': str(port)},
                          preload_robotics=True)
         url = f'http://127.0.0.1:{port}/'
+        if options.individuals:
+            from ontology_factory import write_abox
+            rooms = max(1, options.individuals // 5)
+            abox = write_abox(scratch / 'large.owl', rooms, options.individuals - rooms)
+            answer = node.call('large', 'LOAD FILE', str(abox), '', 'false', 'PELLET', 'false',
+                               timeout_s=600)
+            if not answer.success:
+                raise RuntimeError(f'loading {abox} failed: {answer.error_description}')
+            REFERENCE = 'large'
         mover = Mover(node)
         results: Dict = {}
         try:
             with sync_playwright() as playwright:
                 browser = launch(playwright, '--enable-precise-memory-info')
-                print(f'1. change -> page latency over {options.changes} changes', flush=True)
-                results['latency'] = measure_latency(browser, url, mover, options.changes)
-                print(f'3. ROS round trips without and with {options.pages} open pages',
-                      flush=True)
-                results['cost'] = cost_of_pages(browser, url, node, mover, options.pages,
-                                                options.phase_seconds)
-                print(f'2. soak: {options.soak_minutes} min of a move every 100 ms', flush=True)
-                results['soak'] = soak(browser, url, node, mover, options.soak_minutes)
+                results['reference'] = REFERENCE
+                if 'latency' in parts:
+                    print(f'1. change -> page latency over {options.changes} changes', flush=True)
+                    results['latency'] = measure_latency(browser, url, mover, options.changes)
+                if 'cost' in parts:
+                    print(f'3. ROS round trips without and with {options.pages} open pages',
+                          flush=True)
+                    results['cost'] = cost_of_pages(browser, url, node, mover, options.pages,
+                                                    options.phase_seconds)
+                if 'soak' in parts:
+                    print(f'2. soak: {options.soak_minutes} min of a move every 100 ms',
+                          flush=True)
+                    results['soak'] = soak(browser, url, node, mover, options.soak_minutes)
                 browser.close()
         finally:
             node.stop()
@@ -285,14 +317,25 @@ def main() -> int:
 
 
 def report(results: Dict) -> None:
-    latency = results['latency']
-    print('\n== change -> page (in the browser), bedroom becoming / ceasing to be an OccupiedRoom')
+    print(f'\n(reference: {results["reference"]})')
+    if 'latency' in results:
+        report_latency(results['latency'])
+    if 'cost' in results:
+        report_cost(results['cost'])
+    if 'soak' in results:
+        report_soak(results['soak'])
+
+
+def report_latency(latency: Dict) -> None:
+    print('== change -> page (in the browser), bedroom becoming / ceasing to be an OccupiedRoom')
     for origin in ('from_send', 'from_ack'):
         figures = latency[origin]
         print(f'  {origin:9}: p50 {figures["p50_ms"]:.0f} ms, p90 {figures["p90_ms"]:.0f} ms, '
               f'p99 {figures["p99_ms"]:.0f} ms, max {figures["max_ms"]:.0f} ms '
               f'({figures["n"]} changes)')
-    cost = results['cost']
+
+
+def report_cost(cost: Dict) -> None:
     print('== ROS round trip p50 without / with open pages')
     for command in ('QUERY', 'REPLACE'):
         entry = cost[command]
@@ -301,15 +344,17 @@ def report(results: Dict) -> None:
               f'{entry["with"]["p99_ms"]:.1f} ms; {entry["with"]["calls"]} calls each)')
     print(f'  node CPU: {cost["node_cpu_s"]["without"]:.1f} s without, '
           f'{cost["node_cpu_s"]["with"]:.1f} s with pages ({cost["page_passes"]} page passes)')
-    soak_run = results['soak']
+
+
+def report_soak(soak_run: Dict) -> None:
     first, last = soak_run['samples'][0], soak_run['samples'][-1]
     print(f'== soak: {soak_run["minutes"]} min, {soak_run["moves"]} moves')
     for name in first['pages']:
-        print(f'  {name:11}: JS heap {first["pages"][name]["js_heap_mib"]:.2f} -> '
-              f'{last["pages"][name]["js_heap_mib"]:.2f} MiB, DOM nodes '
-              f'{first["pages"][name]["dom_nodes"]:.0f} -> {last["pages"][name]["dom_nodes"]:.0f}, '
-              f'listeners {first["pages"][name]["listeners"]:.0f} -> '
-              f'{last["pages"][name]["listeners"]:.0f}')
+        before, after = first['pages'][name], last['pages'][name]
+        print(f"  {name:11}: JS heap {before['js_heap_mib']:.2f} -> "
+              f"{after['js_heap_mib']:.2f} MiB,"
+              f' DOM nodes {before["dom_nodes"]:.0f} -> {after["dom_nodes"]:.0f}, listeners '
+              f'{before["listeners"]:.0f} -> {after["listeners"]:.0f}')
     probes = [s['probe']['from_ack_ms'] for s in soak_run['samples']]
     print(f'  probe latency after each minute: first {probes[0]:.0f} ms, last '
           f'{probes[-1]:.0f} ms, max {max(probes):.0f} ms')

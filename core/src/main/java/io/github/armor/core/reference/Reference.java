@@ -145,6 +145,11 @@ public final class Reference {
         lock.unlock();
     }
 
+    /** Whether other threads wait for this reference (a read-only view then lets them go first). */
+    public boolean othersWaiting() {
+        return lock.hasQueuedThreads();
+    }
+
     public String name() {
         return name;
     }

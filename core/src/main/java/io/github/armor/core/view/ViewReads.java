@@ -21,9 +21,9 @@ import org.semanticweb.owlapi.reasoner.OWLReasoner;
 /**
  * How views read a reference: under its lock with the directives' lock wait (lock_wait_ms), and
  * through its reasoner's time limit, as any directive. A view that visits many entities does so in
- * slices of at most {@link #SLICE_NANOS}, releasing the reference in between: its lock is fair, so
- * the directives of ROS clients that queued meanwhile run first, and a large view never holds the
- * robot's knowledge for long.
+ * slices, releasing the reference in between: a slice ends after {@link #SLICE_NANOS}, or as soon
+ * as a directive waits for the reference. Its lock is fair, so the directives of ROS clients that
+ * queued meanwhile run first: they wait for one entity's worth of a view, never for the whole.
  */
 final class ViewReads {
     static final long SLICE_NANOS = 20_000_000L;
@@ -66,7 +66,8 @@ final class ViewReads {
 
     /**
      * Calls {@code step} until it answers that no work is left, holding the reference for slices
-     * of at most {@link #SLICE_NANOS} (each slice does at least one step).
+     * of at most {@link #SLICE_NANOS}, each ended early by a directive waiting (each slice does at
+     * least one step).
      */
     void inSlices(Reference reference, BooleanSupplier step) {
         boolean more = true;
@@ -77,7 +78,7 @@ final class ViewReads {
                 boolean left;
                 do {
                     left = step.getAsBoolean();
-                } while (left && System.nanoTime() < deadline);
+                } while (left && System.nanoTime() < deadline && !r.othersWaiting());
                 return left;
             });
         }
