@@ -14,11 +14,11 @@ CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic'
                  '--disable-sync']
 
 
-def launch(playwright, *extra_args: str):
+def launch(playwright, *extra_args: str, executable: str = CHROMIUM):
     """A headless chromium (Playwright Browser); fails plainly when the browser is missing."""
     if not os.access(CHROMIUM, os.X_OK):
         raise RuntimeError(f'{CHROMIUM} is missing: make setup installs Debian\'s chromium')
-    return playwright.chromium.launch(executable_path=CHROMIUM,
+    return playwright.chromium.launch(executable_path=executable,
                                       args=[*CHROMIUM_ARGS, *extra_args])
 
 

@@ -15,6 +15,9 @@ import json
 import threading
 from typing import Any, Dict, Optional, Set
 
+# Changes reach a page well within a second, and a robot changing facts every few milliseconds
+# makes each open page refetch ten times a second at most (bench/web_view.py: what the pages
+# cost the robot is their browser's CPU, not these refetches).
 COALESCE_S = 0.1
 
 

@@ -422,7 +422,11 @@ function renderGraph(data) {
     for (const element of elements) {
       const existing = graph.getElementById(element.data.id);
       if (existing.nonempty()) {
-        existing.data(element.data);
+        // Only what changed is restyled and redrawn: most of a map stays as it was.
+        const old = existing.data();
+        if (Object.keys(element.data).some((key) => old[key] !== element.data[key])) {
+          existing.data(element.data);
+        }
       } else {
         graph.add(element);
         nodesChanged = nodesChanged || element.group === 'nodes';
