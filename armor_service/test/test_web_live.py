@@ -10,6 +10,7 @@ and again once the revision moves.
 import asyncio
 import json
 import threading
+import time
 
 from armor_service.web import live as live_module
 from armor_service.web.live import LiveUpdates
@@ -129,6 +130,24 @@ def test_shared_answers_fetch_once_per_revision():
     assert json.loads(moved) == {'fetch': 2}
     assert json.loads(expired) == {'fetch': 3}
     assert fetches == 3
+
+
+def test_a_slow_view_is_computed_again_only_after_three_times_its_duration():
+    async def scenario():
+        answers = SharedAnswers()
+        starts = []
+
+        async def slow():
+            starts.append(time.monotonic())
+            await asyncio.sleep(0.05)
+            return {}
+        await answers.get('graph', 1, 30.0, slow)
+        first_ended = time.monotonic()
+        await answers.get('graph', 2, 30.0, slow)
+        return starts[1] - first_ended
+
+    # The reasoner is left at least three quarters of the time: 3 x 50 ms between the two.
+    assert asyncio.run(scenario()) >= 0.14
 
 
 def test_a_failed_fetch_is_not_kept():
