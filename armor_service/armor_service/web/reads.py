@@ -10,9 +10,11 @@ keep a busy page from slowing the robot's clients:
 - identical view requests in flight are sent once, and their answer is kept until the
   reference changes (its revision, from the change events), so five open pages cost one read
   per change, not five;
-- a view is computed again no sooner than ``BUSY_SHARE_INVERSE`` times its last computing time
-  after the last one ended: on a large reference whose views take the reasoner a while, the
-  pages' reads use at most a quarter of the time, however fast the robot changes it;
+- the pages' reads of one reference take turns, each starting no sooner than
+  ``BUSY_SHARE_INVERSE - 1`` times the previous one's duration after it ended: on a large
+  reference, whose views take the reasoner a while after each change, they keep it busy a
+  tenth of the time at most, however fast the robot changes it (the page then follows a
+  little later);
 - the core itself reads large views in short slices between directives (ViewReads.java).
 """
 
@@ -27,7 +29,7 @@ from armor_service.core_process import CoreUnavailable
 
 MAX_CONCURRENT = 2
 CACHE_ENTRIES = 256
-BUSY_SHARE_INVERSE = 4
+BUSY_SHARE_INVERSE = 10
 # The client name of the page's directives (the recent-directives list hides them by default).
 WEB_CLIENT = 'armor_web'
 
@@ -82,18 +84,24 @@ class SharedAnswers:
     A key's answer is reused while ``version`` (a reference's revision, from the change events)
     is the same and it is younger than ``max_age_s``; callers asking for a key being fetched
     wait for that fetch. The least recently used answers go beyond ``CACHE_ENTRIES``.
+
+    Fetches that name a ``reference`` take turns on it, and each starts no sooner than
+    ``BUSY_SHARE_INVERSE - 1`` times the previous one's duration after it ended: whatever the
+    pages ask, their reads of one reference keep it busy a ``1 / BUSY_SHARE_INVERSE`` share of
+    the time at most.
     """
 
     def __init__(self, entries: int = CACHE_ENTRIES):
         self._entries: 'collections.OrderedDict[Hashable, Tuple[Any, float, bytes]]' = \
             collections.OrderedDict()
         self._in_flight: Dict[Tuple[Hashable, Any], asyncio.Task] = {}
-        # key -> (when its last fetch ended, how long it took), monotonic seconds.
-        self._last_fetch: Dict[Hashable, Tuple[float, float]] = {}
+        # reference -> its turn (a lock) and when its last fetch ended and how long it took.
+        self._turns: Dict[str, asyncio.Lock] = {}
+        self._last_fetch: Dict[str, Tuple[float, float]] = {}
         self._limit = entries
 
     async def get(self, key: Hashable, version: Any, max_age_s: float,
-                  fetch: Callable[[], Awaitable[Any]]) -> bytes:
+                  fetch: Callable[[], Awaitable[Any]], reference: Optional[str] = None) -> bytes:
         """The answer of fetch() for key at version, as JSON bytes."""
         kept = self._entries.get(key)
         if kept is not None and kept[0] == version and time.monotonic() - kept[1] < max_age_s:
@@ -103,7 +111,8 @@ class SharedAnswers:
         task = self._in_flight.get(flight)
         if task is None:
             # A task of its own: a page that goes away does not cancel the others' answer.
-            task = asyncio.get_running_loop().create_task(self._fetch(key, version, fetch))
+            task = asyncio.get_running_loop().create_task(
+                self._fetch(key, version, fetch, reference))
             self._in_flight[flight] = task
             task.add_done_callback(lambda done: self._landed(flight, done))
         return await asyncio.shield(task)
@@ -113,26 +122,26 @@ class SharedAnswers:
         if not task.cancelled():
             task.exception()  # retrieved: a failure nobody waits for any more is no warning
 
-    async def _fetch(self, key: Hashable, version: Any,
-                     fetch: Callable[[], Awaitable[Any]]) -> bytes:
-        ended, took = self._last_fetch.get(key, (0.0, 0.0))
-        pause = ended + (BUSY_SHARE_INVERSE - 1) * took - time.monotonic()
-        if pause > 0:
-            await asyncio.sleep(pause)
-        started = time.monotonic()
-        try:
+    async def _fetch(self, key: Hashable, version: Any, fetch: Callable[[], Awaitable[Any]],
+                     reference: Optional[str]) -> bytes:
+        if reference is None:
             body = json.dumps(await fetch(), ensure_ascii=False).encode('utf-8')
-        finally:
-            now = time.monotonic()
-            self._last_fetch.pop(key, None)
-            self._last_fetch[key] = (now, now - started)
-            while len(self._last_fetch) > 2 * self._limit:
-                self._last_fetch.pop(next(iter(self._last_fetch)))
-        self._entries[key] = (version, now, body)
+        else:
+            async with self._turns.setdefault(reference, asyncio.Lock()):
+                ended, took = self._last_fetch.get(reference, (0.0, 0.0))
+                pause = ended + (BUSY_SHARE_INVERSE - 1) * took - time.monotonic()
+                if pause > 0:
+                    await asyncio.sleep(pause)
+                started = time.monotonic()
+                try:
+                    body = json.dumps(await fetch(), ensure_ascii=False).encode('utf-8')
+                finally:
+                    ended = time.monotonic()
+                    self._last_fetch[reference] = (ended, ended - started)
+        self._entries[key] = (version, time.monotonic(), body)
         self._entries.move_to_end(key)
         while len(self._entries) > self._limit:
-            evicted, _ = self._entries.popitem(last=False)
-            self._last_fetch.pop(evicted, None)
+            self._entries.popitem(last=False)
         return body
 
 

@@ -267,7 +267,7 @@ class _Routes:
         # Explaining can take the reasoner seconds, holding the reference: while changes keep
         # coming, one explanation serves EXPLANATION_MAX_AGE_S (a new one once consistency flips).
         return await self._shared(('consistency', reference), self._live.consistent(reference),
-                                  EXPLANATION_MAX_AGE_S, explain)
+                                  EXPLANATION_MAX_AGE_S, explain, reference)
 
     async def dl_query(self, request: web.Request) -> web.Response:
         reference = request.match_info['reference']
@@ -326,11 +326,12 @@ class _Routes:
         view['reference'] = reference
         key = tuple(sorted((k, json.dumps(v)) for k, v in view.items()))
         return await self._shared(key, self._live.version(reference), REFERENCE_MAX_AGE_S,
-                                  lambda: self._reads.view(view))
+                                  lambda: self._reads.view(view), reference)
 
-    async def _shared(self, key, version, max_age_s: float,
-                      fetch: Callable[[], Awaitable[Any]]) -> web.Response:
-        body = await self._guarded(lambda: self._answers.get(key, version, max_age_s, fetch))
+    async def _shared(self, key, version, max_age_s: float, fetch: Callable[[], Awaitable[Any]],
+                      reference: Optional[str] = None) -> web.Response:
+        body = await self._guarded(
+            lambda: self._answers.get(key, version, max_age_s, fetch, reference))
         return web.Response(body=body, content_type='application/json')
 
     async def _guarded(self, call: Callable[[], Awaitable[Any]]) -> Any:
