@@ -44,8 +44,16 @@ from armor_contract.events import (ANSWER_QOS, CHANGE_QOS, CHANGE_TOPIC, SUBSCRI
 from armor_contract.services import SERVICE_QOS
 from armor_msgs.msg import ArmorAnswer, ArmorChange, ArmorDirectiveReq
 from armor_msgs.srv import ArmorSubscribe, ArmorUnsubscribe
+from rclpy.callback_groups import MutuallyExclusiveCallbackGroup
+from rclpy.event_handler import SubscriptionEventCallbacks
 
 _LOG = logging.getLogger('armor_client')
+# An unsubscribe nobody answers is no loss: the node ends a subscription whose topic has no
+# subscriber left by itself (subscription_idle_s).
+_UNSUBSCRIBE_WAIT_S = 5.0
+# No QoS event handlers on answer subscriptions: rclpy keeps a reference to each handler it
+# ever made in their callback group, memory a closed subscription would not give back.
+_NO_EVENT_HANDLERS = SubscriptionEventCallbacks(use_default_callbacks=False)
 _SPARQL_START = re.compile(r'\s*(SELECT|ASK|PREFIX|BASE)\b', re.IGNORECASE)
 _BRACKETED_IRI = re.compile(r'<([^<>\s]+)>')
 Query = Union[str, ArmorDirectiveReq]
@@ -176,9 +184,13 @@ class _Services:
                      timeout_s)
 
     def _prove(self) -> None:
-        """Wait until armor_unsubscribe has answered once (transport.py says why)."""
+        """Wait until armor_unsubscribe has answered once (transport.py says why).
+
+        Again after the services went away (a restarted node): a request sent while no server
+        is there is lost, and its caller would wait for ever.
+        """
         with self._lock:
-            if self._proven:
+            if self._proven and self._subscribe.service_is_ready():
                 return
             deadline = time.monotonic() + self._service_wait_s
             for client in (self._subscribe, self._unsubscribe):
@@ -272,8 +284,12 @@ class Subscription:
         self._answer = {answer: self._decode(answer) for answer in response.answer}
         self._next_sequence = 1
         with self._lock:
+            # A group of its own: one message at a time, in order; and it goes with this object
+            # (rclpy never forgets what was once in a group).
             self._ros_subscription = transport.node.create_subscription(
-                ArmorAnswer, self.topic, self._received, ANSWER_QOS)
+                ArmorAnswer, self.topic, self._received, ANSWER_QOS,
+                callback_group=MutuallyExclusiveCallbackGroup(),
+                event_callbacks=_NO_EVENT_HANDLERS)
             decoded = _sorted(self._answer.values())
             self._deliver(AnswerChange(self.revision, decoded, [], decoded, initial=True))
 
@@ -283,6 +299,12 @@ class Subscription:
         with self._lock:
             return _sorted(self._answer.values())
 
+    @property
+    def alive(self) -> bool:
+        """Whether the node still publishes the subscription's topic (not after a restart)."""
+        with self._lock:
+            return not self._closed and self._ros_subscription.get_publisher_count() > 0
+
     def close(self) -> None:
         """End the subscription (the node stops asking); calling it again does nothing."""
         with self._lock:
@@ -291,7 +313,7 @@ class Subscription:
             self._closed = True
             self._transport.node.destroy_subscription(self._ros_subscription)
         with contextlib.suppress(ArmorServiceCallError):
-            self._services.unsubscribe(self.id, self._timeout_s)
+            self._services.unsubscribe(self.id, _UNSUBSCRIBE_WAIT_S)
 
     def __enter__(self) -> 'Subscription':
         return self
@@ -304,8 +326,10 @@ class Subscription:
 
     def _received(self, message: ArmorAnswer) -> None:
         with self._lock:
-            # The first message repeats the answer the service gave.
-            if self._closed or message.sequence < self._next_sequence:
+            # The first message repeats the answer the service gave; a topic is reused once its
+            # subscription has ended, so a message may be another subscription's.
+            if (self._closed or message.subscription_id != self.id
+                    or message.sequence < self._next_sequence):
                 return
             missed = message.sequence - self._next_sequence
             self._next_sequence = message.sequence + 1

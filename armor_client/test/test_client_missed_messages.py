@@ -11,7 +11,7 @@ from builtin_interfaces.msg import Time
 
 
 class _Node:
-    def create_subscription(self, *args):
+    def create_subscription(self, *args, **kwargs):
         return object()
 
     def destroy_subscription(self, subscription):
@@ -65,6 +65,8 @@ def test_a_subscription_counts_missed_messages_and_keeps_its_answer(monkeypatch)
     message(1, 6, added=['bedroom'])
     message(4, 9, removed=['kitchen'])      # 2 and 3 never arrived
     message(3, 8, added=['hall'])           # late: already past it
+    subscription._received(ArmorAnswer(     # the topic's previous subscription's message
+        subscription_id='s0', sequence=7, revision=10, added=['<http://x.org/o#attic>']))
     assert [(c.revision, c.added, c.removed, c.missed, c.initial) for c in changes] == [
         (5, ['kitchen'], [], 0, True), (6, ['bedroom'], [], 0, False),
         (9, [], ['kitchen'], 2, False)]

@@ -8,6 +8,11 @@ given the subscriptions again with the answers their clients already have (the c
 tells only what changed meanwhile). A subscription ends when its client calls
 armor_unsubscribe, or when its topic has had no subscriber for ``subscription_idle_s`` (the
 client went away without saying so).
+
+Answer topics are reused: a topic whose subscription ended, once no subscriber is left on it,
+is given to the next subscription (with a new publisher, so its history starts afresh; each
+message names its subscription). Every new topic name costs the ROS middleware memory it never
+gives back, so 10,000 subscriptions one after the other use a handful of names, not 10,000.
 """
 
 import itertools
@@ -15,7 +20,7 @@ import secrets
 import threading
 import time
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, Set
+from typing import Any, Callable, Dict, List, Set
 
 from armor_contract.events import (ANSWER_QOS, ANSWER_TOPICS, SUBSCRIBE_SERVICE,
                                    UNSUBSCRIBE_SERVICE)
@@ -25,6 +30,11 @@ from armor_msgs.msg import ArmorAnswer
 from armor_msgs.srv import ArmorSubscribe, ArmorUnsubscribe
 from armor_service import wire
 from armor_service.core_process import CoreProcess, CoreUnavailable
+from rclpy.event_handler import PublisherEventCallbacks
+
+# No QoS event handlers on answer publishers: rclpy keeps a reference to each handler it ever
+# made in their callback group (memory that a destroyed publisher does not give back).
+_NO_EVENT_HANDLERS = PublisherEventCallbacks(use_default_callbacks=False)
 
 
 @dataclass
@@ -33,6 +43,7 @@ class _Subscription:
 
     id: str
     directive: Dict[str, Any]
+    topic: str
     publisher: Any
     answer: Set[str] = field(default_factory=set)
     sequence: int = 0
@@ -59,6 +70,10 @@ class SubscriptionTopics:
         # subscription's topic for its own.
         self._token = secrets.token_hex(3)
         self._numbers = itertools.count(1)
+        self._topic_numbers = itertools.count(1)
+        # Topics of ended subscriptions: free once nobody subscribes to them any more.
+        self._free_topics: List[str] = []
+        self._draining_topics: List[str] = []
         core.add_event_listener(self.on_core_event)
         node.create_service(ArmorSubscribe, SUBSCRIBE_SERVICE, self.subscribe_callback,
                             qos_profile=SERVICE_QOS, callback_group=callback_group)
@@ -72,10 +87,11 @@ class SubscriptionTopics:
 
     def subscribe_callback(self, request, response):
         subscription_id = f's{self._token}_{next(self._numbers)}'
-        topic = self._node.resolve_topic_name(f'{ANSWER_TOPICS}/{subscription_id}')
         directive = wire.directive_to_json(request.armor_request)
-        subscription = _Subscription(subscription_id, directive, self._node.create_publisher(
-            ArmorAnswer, topic, ANSWER_QOS))
+        topic = self._topic()
+        publisher = self._node.create_publisher(ArmorAnswer, topic, ANSWER_QOS,
+                                                event_callbacks=_NO_EVENT_HANDLERS)
+        subscription = _Subscription(subscription_id, directive, topic, publisher)
         # Registered before the core is asked: its first answer event may come before its reply.
         with self._lock:
             self._subscriptions[subscription_id] = subscription
@@ -97,6 +113,14 @@ class SubscriptionTopics:
         response.revision = int(reply['revision'])
         response.answer = list(dict.fromkeys(first['queried_objects']))
         return response
+
+    def _topic(self) -> str:
+        """A topic for a new subscription: a free one if there is one."""
+        with self._lock:
+            if self._free_topics:
+                return self._free_topics.pop()
+        return self._node.resolve_topic_name(
+            f'{ANSWER_TOPICS}/t{self._token}_{next(self._topic_numbers)}')
 
     def unsubscribe_callback(self, request, response):
         response.success = self._end(request.subscription_id)
@@ -141,11 +165,19 @@ class SubscriptionTopics:
                         'stamp_ns': time.time_ns()})
 
     def end_abandoned(self) -> None:
-        """End the subscriptions whose topic has had no subscriber for subscription_idle_s."""
+        """End the subscriptions whose topic has had no subscriber for subscription_idle_s.
+
+        Also frees the topics of ended subscriptions that nobody subscribes to any more.
+        """
         now = time.monotonic()
         idle_s = self._idle_s()
         with self._lock:
             subscriptions = list(self._subscriptions.values())
+            draining = list(self._draining_topics)
+        free = [topic for topic in draining if self._node.count_subscribers(topic) == 0]
+        with self._lock:
+            self._draining_topics = [t for t in self._draining_topics if t not in free]
+            self._free_topics.extend(free)
         for subscription in subscriptions:
             if subscription.publisher.get_subscription_count() > 0:
                 subscription.without_subscriber_since = now
@@ -170,6 +202,8 @@ class SubscriptionTopics:
             except CoreUnavailable:
                 pass  # a new core is given only the subscriptions still here
         self._node.destroy_publisher(subscription.publisher)
+        with self._lock:
+            self._draining_topics.append(subscription.topic)
         return True
 
     def _publish(self, subscription: _Subscription, event: Dict[str, Any]) -> None:

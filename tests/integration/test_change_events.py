@@ -20,10 +20,13 @@ def load(reference: str, client: str = 'loader'):
 
 @pytest.fixture
 def changes(armor):
+    """A listener that has received a change (of a reference of its own, dropped after)."""
     listener = ChangeListener(armor.node)
+    assert armor.call(load('topic_probe')).success
     listener.wait_until_live(lambda: armor.call(directive(
-        'probe', 'robotics', 'ADD', 'IND', 'CLASS', ['probe_robot', 'Robot'])))
+        'probe', 'topic_probe', 'ADD', 'IND', 'CLASS', ['probe_robot', 'Robot'])))
     yield listener
+    armor.call(directive('probe', 'topic_probe', 'DROP'))
     listener.close()
 
 

@@ -78,3 +78,26 @@ def test_watch_without_a_query_prints_each_change(watched):
                       'bedroom')
     ctrl_c(terminal)
     assert terminal.close() == 0, terminal.screen
+
+
+def test_watch_subscribes_again_when_the_node_is_restarted(tmp_path):
+    from conftest import start_node
+    node = start_node(tmp_path, namespace='/watched_node')
+    terminal = Terminal(['-m', 'armor_client.cli', 'watch', '--namespace', '/watched_node',
+                         '--wait', '120', 'robotics', 'QUERY', 'IND', 'CLASS', '--',
+                         'OccupiedRoom'])
+    try:
+        terminal.wait_for('kitchen', timeout_s=120)
+        node.stop()
+        node = start_node(tmp_path, namespace='/watched_node')
+        terminal.wait_for('subscribing again', timeout_s=60)
+        terminal.wait_for('kitchen', timeout_s=120)
+        moved = armor_call('--namespace', '/watched_node', '--wait', '60', 'robotics', 'ADD',
+                           'OBJECTPROP', 'IND', '--', 'isIn', 'alice', 'bedroom')
+        assert moved.returncode == 0, moved.stderr
+        terminal.wait_for('+ bedroom', timeout_s=60)
+    finally:
+        ctrl_c(terminal)
+        code = terminal.close()
+        node.stop()
+    assert code == 0, terminal.screen

@@ -18,7 +18,8 @@ Exit status: 0 after Ctrl-C, 1 the node refused the query, 2 no service.
 import argparse
 import signal
 import threading
-from typing import Any
+import time
+from typing import Any, Callable
 
 from armor_client.cli.common import add_connection_arguments, connect, reporting_errors
 from armor_client.subscriptions import AnswerChange, Change
@@ -27,6 +28,8 @@ from armor_client.values import Value
 
 # Directive arguments follow a lone '--' (they may start with '-').
 TRAILING = '--'
+# How long an answer topic may go without its publisher before the watch subscribes again.
+_GONE_S = 5.0
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -78,9 +81,13 @@ def _watch(args: argparse.Namespace, armor: Any, stop: threading.Event) -> None:
         command, primary, secondary = (args.words + ['', ''])[:3]
         query = directive(armor.client_name, args.reference, command, primary, secondary,
                           args.directive_args)
-        printer = _AnswerPrinter(args.reference, query)
-        with armor.reference(args.reference).subscribe(query, printer.print):
-            _wait(stop)
+        while not stop.is_set():
+            printer = _AnswerPrinter(args.reference, query)
+            with armor.reference(args.reference).subscribe(query, printer.print) as watched:
+                _wait(stop, lambda: watched.alive)
+            if not stop.is_set():
+                _say(f'! the node no longer answers subscription {watched.id} (it was '
+                     'restarted?): subscribing again')
     else:
         reference = None if args.reference == '-' else args.reference
         with armor.changes(_print_change, reference):
@@ -131,9 +138,16 @@ def _text(value: Value) -> str:
     return str(value)
 
 
-def _wait(stop: threading.Event) -> None:
+def _wait(stop: threading.Event, alive: Callable[[], bool] = lambda: True) -> None:
+    """Until stop is set, or alive() has been false for _GONE_S."""
+    gone_since = None
     while not stop.wait(0.5):
-        pass
+        if alive():
+            gone_since = None
+        elif gone_since is None:
+            gone_since = time.monotonic()
+        elif time.monotonic() - gone_since > _GONE_S:
+            return
 
 
 def _say(line: str) -> None:

@@ -140,15 +140,16 @@ public final class ArmorCore implements AutoCloseable {
      * only a QUERY, without logging it and without counting it as its client's activity (a standing
      * query must not keep a mount lease alive).
      */
-    private Subscriptions.Evaluation askSubscribed(Directive query, long unlessRevision) {
+    private Subscriptions.Evaluation askSubscribed(Directive query, long unlessRevision, long expectRevision) {
         long[] revision = {-1};
+        boolean[] postponed = {false};
         try {
             SizeLimits.check(query);
             CommandSpec spec = commands.find(query.key()).orElse(null);
             if (spec == null || spec.kind() != CommandKind.QUERY) {
-                throw new ArmorException(ExitCode.UNKNOWN_COMMAND, "only a query (a QUERY command) can be subscribed to; "
-                        + query.describe() + (spec == null ? " is not a command" : " is a " + spec.kind()
-                        .catalogueName()));
+                throw new ArmorException(ExitCode.UNKNOWN_COMMAND, "only a query (a QUERY command) can be"
+                        + " subscribed to; " + query.describe() + (spec == null ? " is not a command"
+                        : " is a " + spec.kind().catalogueName()));
             }
             if (query.referenceName().isEmpty()) {
                 throw new ArmorException(ExitCode.NO_REFERENCE_NAME, "no reference name given for "
@@ -159,8 +160,12 @@ public final class ArmorCore implements AutoCloseable {
             CommandContext context = context(query, target);
             Response underLock = target.locked(config.lockWaitMs(), reference -> {
                 revision[0] = reference.revision();
-                return revision[0] == unlessRevision ? null : spec.handler().run(context);
+                postponed[0] = expectRevision != Subscriptions.ANY_REVISION && revision[0] != expectRevision;
+                return revision[0] == unlessRevision || postponed[0] ? null : spec.handler().run(context);
             });
+            if (postponed[0]) {
+                return Subscriptions.Evaluation.POSTPONED;
+            }
             return underLock == null ? null
                     : new Subscriptions.Evaluation(revision[0], context.finishAfterRelease(underLock));
         } catch (ArmorException e) {

@@ -170,6 +170,22 @@ class SubscriptionsTest {
     }
 
     @Test
+    void aSteadyStreamOfChangesPostponesAnswersAtMostAboutASecond() throws Exception {
+        subscribe("robots", OCCUPIED, "Robot");
+        next();
+        long start = System.nanoTime();
+        long streamNanos = 3 * Subscriptions.MAX_DELAY_MS * 1_000_000L;
+        int i = 0;
+        while (System.nanoTime() - start < streamNanos) {
+            fixture.ok("map", "ADD IND CLASS", "bot" + i++, "Robot");
+        }
+        long streamEnd = System.currentTimeMillis();
+        AnswerEvent during = next();
+        assertTrue(during.stampNs() / 1_000_000 < streamEnd, "no answer while the changes kept coming");
+        assertTrue(during.revision() < i, "the first answer came only after the last change");
+    }
+
+    @Test
     void aClientThatKnowsTheAnswerIsToldOnlyWhatChanged() throws Exception {
         Subscriptions.Evaluation first = fixture.core.subscriptions().subscribe("again", Directive.of("w", "map",
                 "QUERY", "IND", "CLASS", "Robot"), List.of(iri("robot1"), iri("robotGone")));

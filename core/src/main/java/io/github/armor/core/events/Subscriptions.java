@@ -36,6 +36,12 @@ import org.slf4j.LoggerFactory;
  * a subscription whose reference is still at the revision it last saw is not asked again.
  * Events of one subscription leave in the order of its evaluations.
  *
+ * <p>Directives come first: the worker waits until the reference has had no change for
+ * {@link #QUIET_MS} (a client sending changes back to back is not held up by the questions its
+ * changes raise), and stops a round as soon as another change comes; a round overdue by
+ * {@link #MAX_DELAY_MS} runs regardless (under a steady stream of changes, answers still follow,
+ * each directive then waiting for at most one query).
+ *
  * <p>An answer is a set: a SPARQL row that occurs twice is one answer. Threading: every public
  * method may be called from any thread.
  */
@@ -43,6 +49,10 @@ public final class Subscriptions implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(Subscriptions.class);
     /** Not a revision: the query is asked whatever the reference's revision. */
     public static final long ANY_REVISION = Long.MIN_VALUE;
+    /** How long a reference must go without a change before its subscriptions are asked. */
+    public static final long QUIET_MS = 10;
+    /** How long changes may keep postponing the subscriptions of a reference. */
+    public static final long MAX_DELAY_MS = 1000;
     // A time limit (the reference busy, the reasoner slow) is retried this often before it is announced.
     private static final int TIMEOUT_RETRIES = 3;
     private static final long RETRY_DELAY_MS = 500;
@@ -50,16 +60,21 @@ public final class Subscriptions implements AutoCloseable {
     private static final long WORKER_STACK_BYTES = 256L << 20;
 
     /** One evaluation of a subscribed query: the revision it holds at (-1 if unknown) and its response. */
-    public record Evaluation(long revision, Response response) {}
+    public record Evaluation(long revision, Response response) {
+        /** Not asked: the reference changed again meanwhile (see {@link Evaluator#evaluate}). */
+        public static final Evaluation POSTPONED = new Evaluation(ANY_REVISION, null);
+    }
 
     /** Asks a query for a subscription (the core does, without logging it as a client's directive). */
     @FunctionalInterface
     public interface Evaluator {
         /**
-         * The query's answer with the revision it holds at, or null when its reference is still at
-         * {@code unlessRevision}. Failures are answered, never thrown.
+         * The query's answer with the revision it holds at; null when its reference is still at
+         * {@code unlessRevision}; {@link Evaluation#POSTPONED} when, once held, the reference is
+         * no longer at {@code expectRevision} (a change came meanwhile: directives go first).
+         * Either revision may be {@link #ANY_REVISION}. Failures are answered, never thrown.
          */
-        Evaluation evaluate(Directive query, long unlessRevision);
+        Evaluation evaluate(Directive query, long unlessRevision, long expectRevision);
     }
 
     private final EventFeed feed;
@@ -192,7 +207,7 @@ public final class Subscriptions implements AutoCloseable {
                 subscription.force = true;
             }
         }
-        watch.changed();
+        watch.announced(change.revision());
     }
 
     /** One standing query and what its client was last told. */
@@ -222,9 +237,23 @@ public final class Subscriptions implements AutoCloseable {
         final List<Subscription> subscriptions = new CopyOnWriteArrayList<>();
         private final AtomicBoolean dirty = new AtomicBoolean();
         private final AtomicBoolean running = new AtomicBoolean();
+        // The last change announced: its revision and when; and when the oldest unanswered one came.
+        private volatile long announcedRevision = ANY_REVISION;
+        private volatile long lastChangeNanos;
+        private volatile long pendingSinceNanos;
 
         Watch(String reference) {
             this.reference = reference;
+        }
+
+        void announced(long revision) {
+            long now = System.nanoTime();
+            if (pendingSinceNanos == 0) {
+                pendingSinceNanos = now;
+            }
+            lastChangeNanos = now;
+            announcedRevision = revision;
+            changed();
         }
 
         void changed() {
@@ -232,6 +261,26 @@ public final class Subscriptions implements AutoCloseable {
             if (running.compareAndSet(false, true)) {
                 start();
             }
+        }
+
+        /** Nanoseconds until the reference has been quiet for QUIET_MS (0: it has). */
+        long untilQuiet(long now) {
+            return Math.max(0, lastChangeNanos + QUIET_MS * 1_000_000L - now);
+        }
+
+        /** Starts another round after {@code delayNanos}. */
+        void postpone(long delayNanos) {
+            try {
+                retries.schedule(this::changed, Math.max(delayNanos, 1_000_000L), TimeUnit.NANOSECONDS);
+            } catch (java.util.concurrent.RejectedExecutionException e) {
+                // shutting down: nobody is waiting for answers any more
+            }
+        }
+
+        /** Keeps the time the unanswered changes have waited since, for {@link #overdue}. */
+        private void keepPending(long since) {
+            long current = pendingSinceNanos;
+            pendingSinceNanos = current == 0 ? since : Math.min(current, since);
         }
 
         private void start() {
@@ -246,10 +295,32 @@ public final class Subscriptions implements AutoCloseable {
 
         private void drain() {
             try {
+                round:
                 while (dirty.getAndSet(false)) {
-                    for (Subscription subscription : subscriptions) {
-                        if (subscription.active) {
-                            evaluate(this, subscription);
+                    long roundStart = System.nanoTime();
+                    long pendingAtStart = pendingSinceNanos;
+                    pendingSinceNanos = 0;
+                    long waitingSince = pendingAtStart != 0 ? pendingAtStart : roundStart;
+                    // New subscriptions first: their clients wait for the first answer.
+                    List<Subscription> ordered = new ArrayList<>(subscriptions);
+                    ordered.sort(java.util.Comparator.comparing(s -> s.first.isDone()));
+                    for (Subscription subscription : ordered) {
+                        if (!subscription.active) {
+                            continue;
+                        }
+                        boolean first = !subscription.first.isDone();
+                        long now = System.nanoTime();
+                        boolean overdue = now - waitingSince >= MAX_DELAY_MS * 1_000_000L;
+                        if (!first && !overdue && untilQuiet(now) > 0) {
+                            keepPending(waitingSince);
+                            postpone(untilQuiet(now));
+                            break round;
+                        }
+                        long expected = first || overdue ? ANY_REVISION : announcedRevision;
+                        if (!evaluate(this, subscription, expected)) {
+                            keepPending(waitingSince);
+                            postpone(QUIET_MS * 1_000_000L);
+                            break round;
                         }
                     }
                 }
@@ -262,18 +333,25 @@ public final class Subscriptions implements AutoCloseable {
         }
     }
 
-    private void evaluate(Watch watch, Subscription s) {
+    /**
+     * Asks one subscription again and announces what changed; false when it was postponed (the
+     * reference changed again since {@code expectRevision}).
+     */
+    private boolean evaluate(Watch watch, Subscription s, long expectRevision) {
         boolean fresh = s.answer == null || s.force;
-        s.force = false;
         Evaluation evaluation;
         try {
-            evaluation = evaluator.evaluate(s.query, fresh ? ANY_REVISION : s.revision);
+            evaluation = evaluator.evaluate(s.query, fresh ? ANY_REVISION : s.revision, expectRevision);
         } catch (RuntimeException e) {
             LOG.error("evaluating subscription {} failed", s.id, e);
             evaluation = failure(ExitCode.INTERNAL_ERROR, "evaluating the subscription failed: " + e);
         }
+        if (evaluation == Evaluation.POSTPONED) {
+            return false;
+        }
+        s.force = false;
         if (evaluation == null) {
-            return;
+            return true;
         }
         Response response = evaluation.response();
         if (!s.first.isDone()) {
@@ -285,7 +363,7 @@ public final class Subscriptions implements AutoCloseable {
                 s.revision = evaluation.revision();
             }
             s.first.complete(evaluation);
-            return;
+            return true;
         }
         if (registered(response)) {
             s.timeouts = 0;
@@ -294,7 +372,7 @@ public final class Subscriptions implements AutoCloseable {
             announce(s, evaluation.revision(), s.answer, now, 0, "", false);
             s.answer = now;
             s.revision = evaluation.revision();
-            return;
+            return true;
         }
         int code = response.success() ? ExitCode.TIMEOUT.code() : response.exitCode();
         String description = response.success() ? "the query's time limit cut its answer short"
@@ -307,17 +385,18 @@ public final class Subscriptions implements AutoCloseable {
                 s.announcedFailure = code;
             }
             s.answer = List.of();
-            return;
+            return true;
         }
         if (code == ExitCode.TIMEOUT.code() && ++s.timeouts <= TIMEOUT_RETRIES) {
             s.force = true;
-            retries.schedule(watch::changed, RETRY_DELAY_MS, TimeUnit.MILLISECONDS);
-            return;
+            watch.postpone(RETRY_DELAY_MS * 1_000_000L);
+            return true;
         }
         if (s.announcedFailure != code) {
             announce(s, evaluation.revision(), List.of(), List.of(), code, description, true);
             s.announcedFailure = code;
         }
+        return true;
     }
 
     /** Publishes what changed from {@code before} to {@code now}: when something did, or when told to anyway. */
