@@ -4,6 +4,8 @@ SHELL := /bin/bash
 .DEFAULT_GOAL := help
 
 ROBOTICS := $(CURDIR)/ontologies/robotics.owl
+# The live web view of make run / run-clean (docs/web-view.md); WEB_PORT=0 turns it off.
+WEB_PORT ?= 8080
 
 .PHONY: help setup run test clean
 
@@ -13,14 +15,15 @@ help:  ## list the targets
 setup:  ## install everything: venv with pinned ROS 2 wheels, armor_msgs, Java core, Python packages
 	bash tools/setup.sh
 
-run: setup  ## start the service with the robotics ontology preloaded as reference "robotics"
+run: setup  ## start the service with the robotics ontology preloaded as reference "robotics", web view on :8080
 	source install/setup.bash && armor serve --ros-args \
-	  -p preload_file:=$(ROBOTICS) -p preload_reference:=robotics
+	  -p preload_file:=$(ROBOTICS) -p preload_reference:=robotics -p web_port:=$(WEB_PORT)
 
 .PHONY: run-clean
 run-clean: setup  ## like run, but first delete what earlier sessions changed (restore_state:=false)
 	source install/setup.bash && armor serve --ros-args \
-	  -p preload_file:=$(ROBOTICS) -p preload_reference:=robotics -p restore_state:=false
+	  -p preload_file:=$(ROBOTICS) -p preload_reference:=robotics -p restore_state:=false \
+	  -p web_port:=$(WEB_PORT)
 
 .PHONY: demo
 demo: setup  ## run the surveillance tutorial against a running service (make run first)

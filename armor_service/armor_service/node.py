@@ -33,6 +33,7 @@ class ArmorService(Node):
 
     def __init__(self):
         super().__init__('armor_service')
+        self._web_view = None
         self._armor_parameters = {p.name: p for p in all_parameters()}
         self._declare_parameters()
         settings = core_settings(self._value, self.get_logger().warning)
@@ -57,12 +58,14 @@ class ArmorService(Node):
                             self.directive_list_callback, qos_profile=SERVICE_QOS,
                             callback_group=group)
         self._extensions = load_extensions(self, self._value('extensions'))
+        self._web_view = self._start_web_view()
         self.get_logger().info(
             f'ARMOR ready: services {self.resolve_service_name(DIRECTIVE_SERVICE)} and '
             f'{self.resolve_service_name(LIST_SERVICE)}, changes on '
             f'{self.resolve_topic_name(CHANGE_TOPIC)}; core pid '
             f'{self._core.pid}. Try: armor call {self._value("preload_reference") or "REF"} '
-            'QUERY IND CLASS -- Room')
+            'QUERY IND CLASS -- Room'
+            + (f'. Web view: {self._web_view.url}' if self._web_view else ''))
 
     def directive_callback(self, request, response):
         payload = {'op': 'directive', 'directive': wire.directive_to_json(request.armor_request)}
@@ -107,7 +110,30 @@ class ArmorService(Node):
     def shutdown_core(self) -> None:
         self._extensions.close()
         self._answer_topics.end_all()
+        if self._web_view is not None:
+            self._web_view.stop()
         self._core.stop()
+
+    def _start_web_view(self):
+        """The live web page (armor_service/web) when web_port is set; None when it is off."""
+        port = self._value('web_port')
+        if port == 0:
+            return None
+        if not 0 < port < 65536:
+            raise RuntimeError('parameter web_port must be 0 (off) or a TCP port from 1 to '
+                               f'65535, got {port}')
+        from armor_service.web import WebView
+        from armor_service.web.server import WebViewError
+        view = WebView(self._core, self._value('web_host'), port,
+                       request_timeout_s=self._request_timeout, logger=self.get_logger())
+        try:
+            view.start()
+        except WebViewError as error:
+            # The robot's services matter more than the page: they run without it.
+            self.get_logger().error(f'{error}; the node serves ROS without the web view '
+                                    '(set web_port to a free port)')
+            return None
+        return view
 
     def _timed_out(self):
         answer = wire.error_response(

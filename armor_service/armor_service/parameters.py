@@ -143,6 +143,12 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
     Parameter('subscription_idle_s', 'double', 5.0,
               "a subscription whose topic has had no subscriber this long ends (its client "
               "went away)", read_only=False),
+    Parameter('web_port', 'integer', 0,
+              'TCP port of the live, read-only web view of every reference (0 = off; make run '
+              'uses 8080; docs/web-view.md)'),
+    Parameter('web_host', 'string', '127.0.0.1',
+              'address the web view listens on; any but a loopback address lets every machine '
+              'that reaches it read every reference (docs/web-view.md)'),
 )
 
 

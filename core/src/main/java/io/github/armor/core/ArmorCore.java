@@ -21,6 +21,8 @@ import io.github.armor.core.events.Subscriptions;
 import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
+import io.github.armor.core.view.RecentDirectives;
+import io.github.armor.core.view.ReferenceViews;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -47,6 +49,7 @@ public final class ArmorCore implements AutoCloseable {
     private final ReferenceRegistry references = new ReferenceRegistry();
     private final Rendering rendering;
     private final DirectiveLog directiveLog = new DirectiveLog(System.err);
+    private final RecentDirectives recentDirectives = new RecentDirectives();
     private final Map<String, Long> lastHeardFrom = new ConcurrentHashMap<>();
     private final StateStore state;
     private final EventFeed events = new EventFeed();
@@ -262,6 +265,7 @@ public final class ArmorCore implements AutoCloseable {
     }
 
     private Response run(Directive directive, ListState list) {
+        long start = System.nanoTime();
         Response response;
         try {
             response = dispatch(directive, list);
@@ -277,6 +281,9 @@ public final class ArmorCore implements AutoCloseable {
                     "internal error on " + directive.describe() + ": " + e), consistencyOf(directive));
         }
         directiveLog.record(directive, response);
+        if (!replaying.get()) {
+            recentDirectives.record(directive, response, System.nanoTime() - start);
+        }
         return response;
     }
 
@@ -429,6 +436,21 @@ public final class ArmorCore implements AutoCloseable {
             throw new ArmorException(ExitCode.REFERENCE_MOUNTED, "reference '" + reference.name()
                     + "' is mounted by client '" + holder + "'; " + directive.describe() + " refused, nothing changed");
         }
+    }
+
+    /** The web page's read-only views of this core's references (view/ReferenceViews). */
+    public ReferenceViews views() {
+        return new ReferenceViews(references, config, recentDirectives, this::mountLeaseLeftMs);
+    }
+
+    /** How long the mount of {@code holder} has left before it expires, in ms; negative: mounts never expire. */
+    private long mountLeaseLeftMs(String holder) {
+        if (config.mountLeaseS() <= 0) {
+            return -1;
+        }
+        Long heard = lastHeardFrom.get(holder);
+        long silentMs = heard == null ? Long.MAX_VALUE : (System.nanoTime() - heard) / 1_000_000;
+        return Math.max(0, config.mountLeaseS() * 1000 - silentMs);
     }
 
     private void releaseExpiredMount(Reference reference) {

@@ -94,17 +94,19 @@ public final class Queries implements CommandGroup {
         classRelation(table, "QUERY CLASS DISJOINT", "disjoint classes", EntitySearcher::getDisjointClasses,
                 (r, owlClass) -> r.getDisjointClasses(owlClass).entities());
         table.command("QUERY CLASS RESTRICTIONS").args("class").emptySurplusIgnored()
-                .summary("its restrictions, Manchester syntax").query(c -> {
-            OWLClass owlClass = c.owlClass(0);
-            Stream<OWLClassExpression> definitions = Stream.concat(
-                    EntitySearcher.getSuperClasses(owlClass, Inferences.closure(c.reference())),
-                    EntitySearcher.getEquivalentClasses(owlClass, Inferences.closure(c.reference())));
-            List<String> restrictions = definitions.flatMap(OWLClassExpression::conjunctSet)
-                    .filter(e -> e instanceof OWLRestriction)
-                    .map(e -> Syntax.render(c.reference(), c.config().fullEntityIri(), e))
-                    .distinct().sorted().toList();
-            return c.ok(restrictions);
-        });
+                .summary("its restrictions, Manchester syntax")
+                .query(c -> c.ok(restrictions(c.reference(), c.owlClass(0), c.config().fullEntityIri())));
+    }
+
+    /** The restrictions among the conjuncts of a class's superclasses and definitions, in Manchester syntax. */
+    public static List<String> restrictions(Reference reference, OWLClass owlClass, boolean fullIri) {
+        Stream<OWLClassExpression> definitions = Stream.concat(
+                EntitySearcher.getSuperClasses(owlClass, Inferences.closure(reference)),
+                EntitySearcher.getEquivalentClasses(owlClass, Inferences.closure(reference)));
+        return definitions.flatMap(OWLClassExpression::conjunctSet)
+                .filter(e -> e instanceof OWLRestriction)
+                .map(e -> Syntax.render(reference, fullIri, e))
+                .distinct().sorted().toList();
     }
 
     /** A query answering the named classes related to a class: asserted ones plus inferred ones. */

@@ -43,7 +43,7 @@ import org.semanticweb.owlapi.vocab.SWRLBuiltInsVocabulary;
  * Class expressions, axioms and SWRL rules written by clients, parsed with the OWL API's own
  * Manchester and functional-syntax parsers; names follow the same rules as plain arguments.
  */
-final class Syntax {
+public final class Syntax {
     private static final Pattern NEW_CLASS_NAME = Pattern.compile("[\\p{L}_][\\p{L}\\p{N}_.\\-]*");
     // Protégé writes built-ins as swrlb:lessThan; the OWL API parser knows them by bare name or full IRI.
     private static final Pattern SWRLB_PREFIXED = Pattern.compile("\\bswrlb:([A-Za-z]+)\\s*\\(");
@@ -107,7 +107,7 @@ final class Syntax {
                 Set.of(factory.getRDFSLabel(factory.getOWLLiteral(name))));
     }
 
-    static String render(Reference reference, boolean fullIri, OWLObject object) {
+    public static String render(Reference reference, boolean fullIri, OWLObject object) {
         ManchesterOWLSyntaxOWLObjectRendererImpl renderer = new ManchesterOWLSyntaxOWLObjectRendererImpl();
         SimpleShortFormProvider shortForms = new SimpleShortFormProvider();
         renderer.setShortFormProvider(entity -> fullIri ? "<" + entity.getIRI() + ">" : shortForms.getShortForm(entity));

@@ -65,6 +65,9 @@ public final class Reference {
     private boolean consistent = true;
     private String mountedBy = "";
     private Transaction transaction;
+    // When the reasoner was last brought up to date and how long it took (the web view shows them).
+    private volatile long lastReasoningEpochMs;
+    private volatile long lastReasoningNanos;
     // Read by event and subscription threads without the lock; written only under it.
     private volatile long revision;
     // In memory only: derived state (the SPARQL graph) is rebuilt when it moves; read under the lock.
@@ -100,7 +103,7 @@ public final class Reference {
         this.coverage = ReasonerCoverage.watch(reasonerName, ontology);
         try {
             ReasonerCalls.withBudget(reasonerTimeoutMs, () -> {
-                refreshConsistency();
+                timedReasoning(this::refreshConsistency);
                 return null;
             });
         } catch (RuntimeException e) {
@@ -144,6 +147,11 @@ public final class Reference {
 
     public void release() {
         lock.unlock();
+    }
+
+    /** Whether other threads wait for this reference (a read-only view then lets them go first). */
+    public boolean othersWaiting() {
+        return lock.hasQueuedThreads();
     }
 
     public String name() {
@@ -248,12 +256,14 @@ public final class Reference {
     /** REASON: apply the queue, bring the reasoner up to date, recompute consistency and inferences. */
     public void reason() {
         applyPending();
-        bringReasonerUpToDate();
-        refreshConsistency();
-        if (consistent) {
-            precompute(InferenceType.CLASS_HIERARCHY);
-            precompute(InferenceType.CLASS_ASSERTIONS);
-        }
+        timedReasoning(() -> {
+            bringReasonerUpToDate();
+            refreshConsistency();
+            if (consistent) {
+                precompute(InferenceType.CLASS_HIERARCHY);
+                precompute(InferenceType.CLASS_ASSERTIONS);
+            }
+        });
     }
 
     /**
@@ -358,8 +368,30 @@ public final class Reference {
      * a restore this makes even a buffered reasoner see everything that was replayed.
      */
     public void synchroniseReasoner() {
-        bringReasonerUpToDate();
-        refreshConsistency();
+        timedReasoning(() -> {
+            bringReasonerUpToDate();
+            refreshConsistency();
+        });
+    }
+
+    /** When the reasoner was last brought up to date (ms since the epoch; 0: never). */
+    public long lastReasoningEpochMs() {
+        return lastReasoningEpochMs;
+    }
+
+    /** How long bringing the reasoner up to date took that time, in nanoseconds. */
+    public long lastReasoningNanos() {
+        return lastReasoningNanos;
+    }
+
+    private void timedReasoning(Runnable work) {
+        long start = System.nanoTime();
+        try {
+            work.run();
+        } finally {
+            lastReasoningNanos = System.nanoTime() - start;
+            lastReasoningEpochMs = System.currentTimeMillis();
+        }
     }
 
     /**

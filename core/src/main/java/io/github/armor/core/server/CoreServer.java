@@ -9,6 +9,7 @@ import io.github.armor.core.events.AnswerEvent;
 import io.github.armor.core.events.ChangeEvent;
 import io.github.armor.core.events.CoreEvent;
 import io.github.armor.core.events.Subscriptions;
+import io.github.armor.core.view.ReferenceViews;
 import java.io.EOFException;
 import java.io.IOException;
 import java.net.StandardProtocolFamily;
@@ -38,7 +39,9 @@ import org.slf4j.LoggerFactory;
  *
  * <p>Requests: {@code {"id", "op": "directive", "directive": {...}}},
  * {@code {"id", "op": "list", "directives": [...]}}, {@code {"id", "op": "ping"}}, and the read-only
- * {@code {"id", "op": "catalogue"}}, answered {@code {"id", "catalogue": {...}}} (see {@link Catalogue}).
+ * {@code {"id", "op": "catalogue"}}, answered {@code {"id", "catalogue": {...}}} (see {@link Catalogue}), and
+ * the read-only {@code {"id", "op": "view", "view": {"name", ...}}} of the web page, answered
+ * {@code {"id", "view": {...}}} (see {@link ReferenceViews}).
  *
  * <p>Events: the core also sends every connection frames nobody asked for, without an {@code id}
  * and with an {@code "event"} key: {@code "change"} for each acknowledged change of a reference
@@ -61,11 +64,13 @@ public final class CoreServer {
 
     private final ArmorCore core;
     private final JsonObject catalogue;
+    private final ReferenceViews views;
     private final ExecutorService workers = Executors.newCachedThreadPool(new WorkerThreads());
 
     public CoreServer(ArmorCore core, JsonObject catalogue) {
         this.core = core;
         this.catalogue = catalogue;
+        this.views = core.views();
     }
 
     /** Binds the socket, then calls {@code onReady} and serves until the process ends. */
@@ -133,6 +138,7 @@ public final class CoreServer {
                         WireCodec.listResponse(core.executeList(WireCodec.directives(request.getAsJsonArray("directives")))));
                 case "ping" -> reply.addProperty("pong", true);
                 case "catalogue" -> reply.add("catalogue", catalogue);
+                case "view" -> reply.add("view", views.answer(request.getAsJsonObject("view")));
                 case "subscribe" -> subscribe(request, reply, subscribed);
                 case "unsubscribe" -> {
                     String subscription = request.get("subscription").getAsString();

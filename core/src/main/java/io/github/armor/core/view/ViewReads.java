@@ -1,0 +1,134 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.view;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.reference.Reference;
+import io.github.armor.core.reference.ReferenceRegistry;
+import java.util.HashSet;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import java.util.function.BooleanSupplier;
+import java.util.function.Consumer;
+import java.util.function.Function;
+import java.util.stream.Collectors;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.reasoner.OWLReasoner;
+
+/**
+ * How views read a reference: under its lock with the directives' lock wait (lock_wait_ms), and
+ * through its reasoner's time limit, as any directive. A view that visits many entities does so in
+ * slices, releasing the reference in between: a slice ends after {@link #SLICE_NANOS}, or as soon
+ * as a directive waits for the reference. Its lock is fair, so the directives of ROS clients that
+ * queued meanwhile run first: they wait for one entity's worth of a view, never for the whole.
+ */
+final class ViewReads {
+    static final long SLICE_NANOS = 20_000_000L;
+
+    private final ReferenceRegistry references;
+    private final long lockWaitMs;
+
+    ViewReads(ReferenceRegistry references, long lockWaitMs) {
+        this.references = references;
+        this.lockWaitMs = lockWaitMs;
+    }
+
+    Reference reference(String name) {
+        return references.get(name);
+    }
+
+    ReferenceRegistry references() {
+        return references;
+    }
+
+    /** Runs {@code work} holding the reference, as one directive would. */
+    <T> T whole(Reference reference, Function<Reference, T> work) {
+        return reference.locked(lockWaitMs, r -> {
+            checkStillLoaded(r);
+            return work.apply(r);
+        });
+    }
+
+    /** Runs {@code work} on every item, holding the reference for slices of at most {@link #SLICE_NANOS}. */
+    <T> void inSlices(Reference reference, List<T> items, Consumer<T> work) {
+        Iterator<T> remaining = items.iterator();
+        inSlices(reference, () -> {
+            if (!remaining.hasNext()) {
+                return false;
+            }
+            work.accept(remaining.next());
+            return remaining.hasNext();
+        });
+    }
+
+    /**
+     * Calls {@code step} until it answers that no work is left, holding the reference for slices
+     * of at most {@link #SLICE_NANOS}, each ended early by a directive waiting (each slice does at
+     * least one step).
+     */
+    void inSlices(Reference reference, BooleanSupplier step) {
+        boolean more = true;
+        while (more) {
+            more = reference.locked(lockWaitMs, r -> {
+                checkStillLoaded(r);
+                long deadline = System.nanoTime() + SLICE_NANOS;
+                boolean left;
+                do {
+                    left = step.getAsBoolean();
+                } while (left && System.nanoTime() < deadline && !r.othersWaiting());
+                return left;
+            });
+        }
+    }
+
+    /**
+     * The reasoner's answer, or none where it has none to give: the reference is inconsistent, or
+     * its reasoner cannot answer this kind of question (ELK and property values), or it failed on
+     * this entity (a buffered reasoner that has not seen it yet). A time limit overrun is an error.
+     * The caller holds the reference.
+     */
+    static <T> Optional<T> inferred(Reference reference, Function<OWLReasoner, T> question) {
+        if (!reference.isConsistent()) {
+            return Optional.empty();
+        }
+        try {
+            OWLReasoner reasoner = reference.reasonerForQuery();
+            return Optional.ofNullable(reference.guardReasoner(() -> question.apply(reasoner)));
+        } catch (ArmorException e) {
+            if (e.exitCode() == ExitCode.NOT_SUPPORTED || e.exitCode() == ExitCode.INCONSISTENT
+                    || e.exitCode() == ExitCode.REASONER_FAILED) {
+                return Optional.empty();
+            }
+            throw e;
+        }
+    }
+
+    /**
+     * An individual's most specific inferred types: its direct types, less any that is a
+     * superclass of another of them (Openllet, realising incrementally, can answer a type
+     * together with its own subclass). Empty when the reasoner has no answer. The caller holds
+     * the reference.
+     */
+    static Set<OWLClass> directTypes(Reference reference, OWLNamedIndividual individual) {
+        return inferred(reference, reasoner -> {
+            Set<OWLClass> direct = reasoner.getTypes(individual, true).entities().filter(c -> !c.isOWLThing())
+                    .collect(Collectors.toCollection(HashSet::new));
+            Set<OWLClass> implied = new HashSet<>();
+            for (OWLClass type : direct) {
+                reasoner.getSuperClasses(type, false).entities().forEach(implied::add);
+            }
+            direct.removeAll(implied);
+            return direct;
+        }).orElse(Set.of());
+    }
+
+    private void checkStillLoaded(Reference reference) {
+        if (references.find(reference.name()).orElse(null) != reference) {
+            throw new ArmorException(ExitCode.UNKNOWN_REFERENCE, "reference '" + reference.name()
+                    + "' was dropped while the view was being read");
+        }
+    }
+}
