@@ -3,6 +3,7 @@ package io.github.armor.core.reasoning;
 
 import io.github.armor.core.reasoning.AboxModules.Module;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -11,6 +12,7 @@ import java.util.Set;
 import java.util.function.Function;
 import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.model.IRI;
+import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLAxiom;
 import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
@@ -18,10 +20,12 @@ import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyCreationException;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.reasoner.InferenceType;
+import org.semanticweb.owlapi.reasoner.NodeSet;
 import org.semanticweb.owlapi.reasoner.OWLReasoner;
 import org.semanticweb.owlapi.reasoner.OWLReasonerConfiguration;
 import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
 import org.semanticweb.owlapi.reasoner.ReasonerInterruptedException;
+import org.semanticweb.owlapi.reasoner.impl.OWLClassNodeSet;
 import org.semanticweb.owlapi.util.OWLObjectDuplicator;
 
 /**
@@ -34,7 +38,7 @@ import org.semanticweb.owlapi.util.OWLObjectDuplicator;
  */
 final class ModuleRealiser {
     /** Individuals per batch: large enough to start few reasoners, small enough to bound memory. */
-    static final int BATCH_INDIVIDUALS = 2000;
+    static final int BATCH_INDIVIDUALS = 5000;
     private static final int SHAPES_KEPT = 4096;
     private static final IRI PLACEHOLDER = IRI.create("urn:armor:reasoning#individual");
 
@@ -122,11 +126,14 @@ final class ModuleRealiser {
             if (reasoner.getPrecomputableInferenceTypes().contains(InferenceType.CLASS_ASSERTIONS)) {
                 reasoner.precomputeInferences(InferenceType.CLASS_ASSERTIONS);
             }
+            // All types are the most specific ones and everything above them: asked once per kind of individual.
+            Map<NodeSet<OWLClass>, TypeProfile> byDirectTypes = new HashMap<>();
             List<Realised> realised = new ArrayList<>();
             for (Module module : batch) {
                 Map<OWLNamedIndividual, TypeProfile> types = new LinkedHashMap<>();
-                module.namedMembers().forEach(member -> types.put(member, profiles.intern(TypeProfile.of(
-                        reasoner.getTypes(member, false), reasoner.getTypes(member, true)))));
+                module.namedMembers().forEach(member -> types.put(member, byDirectTypes.computeIfAbsent(
+                        reasoner.getTypes(member, true), direct -> profiles.intern(
+                                TypeProfile.of(withSuperClasses(reasoner, direct), direct)))));
                 realised.add(new Realised(module, true, types));
             }
             return realised;
@@ -145,6 +152,17 @@ final class ModuleRealiser {
             reason(batch.subList(0, half), axioms.subList(0, half), done);
             reason(batch.subList(half, batch.size()), axioms.subList(half, axioms.size()), done);
         }
+    }
+
+    private static NodeSet<OWLClass> withSuperClasses(OWLReasoner reasoner, NodeSet<OWLClass> direct) {
+        OWLClassNodeSet all = new OWLClassNodeSet();
+        direct.forEach(node -> {
+            all.addNode(node);
+            // JFact answers an empty node for an individual whose only type is owl:Thing.
+            node.entities().findFirst().ifPresent(representative ->
+                    all.addAllNodes(reasoner.getSuperClasses(representative, false).nodes()));
+        });
+        return all;
     }
 
     private <T> T withReasoner(Set<OWLAxiom> abox, Function<OWLReasoner, T> question) {

@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.TreeMap;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Predicate;
 import java.util.regex.Pattern;
 import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.IRI;
@@ -64,8 +65,22 @@ public final class EntityResolver {
         return factory.getOWLEntity(type, iri(type, argument));
     }
 
+    /** The entity an argument names, resolved against the signature {@code inSignature} (see {@link #iri}). */
+    public <E extends OWLEntity> E entity(EntityType<E> type, String argument, Predicate<OWLEntity> inSignature) {
+        return factory.getOWLEntity(type, iri(type, argument, inSignature));
+    }
+
     /** The IRI an argument names for an entity of the given kind. */
     public IRI iri(EntityType<?> type, String argument) {
+        return iri(type, argument, entity -> ontology.containsEntityInSignature(entity, Imports.INCLUDED));
+    }
+
+    /**
+     * The same, with the signature given by {@code inSignature}: a reader that may not touch the
+     * live ontology (it answers from a kept state while a writer holds the reference) passes that
+     * state's signature.
+     */
+    public IRI iri(EntityType<?> type, String argument, Predicate<OWLEntity> inSignature) {
         String name = argument.trim();
         if (name.isEmpty()) {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "empty " + kind(type) + " name");
@@ -92,11 +107,11 @@ public final class EntityResolver {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "'" + name + "' is not a valid " + kind(type) + " name");
         }
         IRI inDefault = IRI.create(defaultNamespace + name);
-        if (ontology.containsEntityInSignature(factory.getOWLEntity(type, inDefault), Imports.INCLUDED)) {
+        if (inSignature.test(factory.getOWLEntity(type, inDefault))) {
             return inDefault;
         }
         List<IRI> elsewhere = byShortName.getOrDefault(name, Set.of()).stream()
-                .filter(iri -> ontology.containsEntityInSignature(factory.getOWLEntity(type, iri), Imports.INCLUDED))
+                .filter(iri -> inSignature.test(factory.getOWLEntity(type, iri)))
                 .sorted().toList();
         if (elsewhere.size() == 1) {
             return elsewhere.get(0);

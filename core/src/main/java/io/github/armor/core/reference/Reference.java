@@ -3,9 +3,12 @@ package io.github.armor.core.reference;
 
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.reasoning.ModularReasoner;
+import io.github.armor.core.reasoning.PublishedStates;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
@@ -65,6 +68,8 @@ public final class Reference {
     });
 
     private final ReentrantLock lock = new ReentrantLock(true);
+    // The reasoner's kept types as readers that do not wait see them: offered when a writer lets go.
+    private final PublishedStates published = new PublishedStates();
 
     private final List<OWLOntologyChange> pending = new ArrayList<>();
     private OWLReasoner reasoner;
@@ -102,6 +107,7 @@ public final class Reference {
         this.reasonerTimeoutMs = reasonerTimeoutMs;
         this.reasoner = createReasoner();
         refreshConsistency();
+        published.offer(reasoner);
     }
 
     /** Runs {@code work} holding this reference, waiting at most {@code waitMs} for other directives. */
@@ -135,7 +141,23 @@ public final class Reference {
     }
 
     public void release() {
+        if (lock.getHoldCount() == 1) {
+            published.offer(reasoner);
+        }
         lock.unlock();
+    }
+
+    /** Whether another thread holds this reference (a writer reasoning, or a directive under way). */
+    public boolean isBusy() {
+        return lock.isLocked() && !lock.isHeldByCurrentThread();
+    }
+
+    /**
+     * The last reasoned state a writer left, for a reader that must not wait while the reference
+     * is busy; empty when this reference's reasoner keeps none (buffered reasoner, ELK, whole-ontology reasoning).
+     */
+    public Optional<PublishedStates.Published> publishedState() {
+        return published.current();
     }
 
     public String name() {
@@ -322,10 +344,13 @@ public final class Reference {
     /**
      * Flushes the reasoner, or replaces it where incremental updates are known to go wrong:
      * Openllet and JFact keep inferences of removed axioms, and HermiT refuses assertions
-     * whose property was not in the ontology when it was created. ELK updates itself correctly.
+     * whose property was not in the ontology when it was created. ELK updates itself correctly,
+     * and so does the modular reasoner (it reasons on the modules a change touched afresh).
      */
     private void bringReasonerUpToDate() {
-        if (removedSinceSync && !reasonerName.equals("ELK")) {
+        boolean handlesRemovals = reasonerName.equals("ELK")
+                || reasoner instanceof ModularReasoner modular && modular.handlesRemovals();
+        if (removedSinceSync && !handlesRemovals) {
             rebuildReasoner();
             return;
         }
@@ -398,6 +423,11 @@ public final class Reference {
         SimpleConfiguration configuration = reasonerTimeoutMs > 0
                 ? new SimpleConfiguration(reasonerTimeoutMs) : new SimpleConfiguration();
         try {
+            // A reasoner brought up to date after every change reasons only where a change reaches.
+            if (!bufferedReasoner && ModularReasoner.handles(reasonerName)) {
+                return new ModularReasoner(reasonerName, ReasonerRegistry.factory(reasonerName), ontology,
+                        configuration);
+            }
             return ReasonerRegistry.factory(reasonerName).createReasoner(ontology, configuration);
         } catch (ArmorException e) {
             throw e;
