@@ -123,6 +123,12 @@ public final class ModularReasoner implements OWLReasoner {
         return mode != Mode.WHOLE;
     }
 
+    /** How many modules took an earlier module's result since the last schema change (for tests). */
+    long reusedShapes() {
+        ModuleRealiser current = realiser;
+        return current == null ? 0 : current.reusedShapes();
+    }
+
     /** Why the ontology is reasoned on as a whole, or empty when it is reasoned on in modules. */
     public String wholeBecause() {
         return wholeBecause;

@@ -11,10 +11,8 @@ import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
 import org.semanticweb.owlapi.apibinding.OWLManager;
-import org.semanticweb.owlapi.model.IRI;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLAxiom;
-import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyCreationException;
@@ -26,38 +24,28 @@ import org.semanticweb.owlapi.reasoner.OWLReasonerConfiguration;
 import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
 import org.semanticweb.owlapi.reasoner.ReasonerInterruptedException;
 import org.semanticweb.owlapi.reasoner.impl.OWLClassNodeSet;
-import org.semanticweb.owlapi.util.OWLObjectDuplicator;
 
 /**
  * Reasons on modules: the schema plus the modules' assertions in a fresh reasoner of the
  * reference's kind, which answers each member's types. Modules go together in batches (a
  * reasoner per module would start too often); a batch that is inconsistent is halved until the
- * inconsistent modules are found, since the others' types are still needed. A module of one
- * individual is looked up first by its shape (its assertions with the individual renamed): a new
- * robot asserted a Robot has the types every such robot has.
+ * inconsistent modules are found, since the others' types are still needed. A module shaped like
+ * one reasoned on before takes its result ({@link ModuleShapes}): a new robot asserted a Robot
+ * has the types every such robot has, a room with three robots those of every such room.
  */
 final class ModuleRealiser {
     /** Individuals per batch: large enough to start few reasoners, small enough to bound memory. */
     static final int BATCH_INDIVIDUALS = 5000;
-    private static final int SHAPES_KEPT = 4096;
-    private static final IRI PLACEHOLDER = IRI.create("urn:armor:reasoning#individual");
 
     /** A module reasoned on: consistent with these types, or inconsistent (no types). */
     record Realised(Module module, boolean consistent, Map<OWLNamedIndividual, TypeProfile> types) {}
-
-    private record Shape(boolean consistent, TypeProfile types) {}
 
     private final OWLReasonerFactory factory;
     private final OWLReasonerConfiguration configuration;
     private final List<OWLAxiom> schema;
     private final OWLOntologyManager scratch = OWLManager.createOWLOntologyManager();
     private final TypeProfile.Interner profiles = new TypeProfile.Interner();
-    private final Map<Set<OWLAxiom>, Shape> shapes = new LinkedHashMap<>(16, 0.75f, true) {
-        @Override
-        protected boolean removeEldestEntry(Map.Entry<Set<OWLAxiom>, Shape> eldest) {
-            return size() > SHAPES_KEPT;
-        }
-    };
+    private final ModuleShapes shapes = new ModuleShapes(scratch);
     private volatile OWLReasoner running;
     private volatile boolean interrupted;
 
@@ -75,30 +63,59 @@ final class ModuleRealiser {
     /** Reasons on the modules; every module comes back once, consistent with types or inconsistent. */
     List<Realised> realise(List<Module> modules, Function<Module, Set<OWLAxiom>> axiomsOf) {
         List<Realised> done = new ArrayList<>();
-        List<Module> batch = new ArrayList<>();
-        List<Set<OWLAxiom>> batchAxioms = new ArrayList<>();
-        int batchIndividuals = 0;
+        Batch batch = new Batch();
+        // Modules shaped like one already waiting in the batch take its result afterwards.
+        Map<Set<OWLAxiom>, List<Module>> followers = new HashMap<>();
+        Map<Module, ModuleShapes.Shape> shapeOf = new HashMap<>();
         for (Module module : modules) {
             Set<OWLAxiom> axioms = axiomsOf.apply(module);
-            Realised known = byShape(module, axioms);
-            if (known != null) {
-                done.add(known);
-                continue;
+            ModuleShapes.Shape shape = shapes.shapeOf(module, axioms);
+            if (shape != null) {
+                Realised known = shapes.lookup(module, shape);
+                if (known != null) {
+                    done.add(known);
+                    continue;
+                }
+                List<Module> waiting = followers.get(shape.key());
+                if (waiting != null) {
+                    waiting.add(module);
+                    shapeOf.put(module, shape);
+                    continue;
+                }
+                followers.put(shape.key(), new ArrayList<>());
             }
-            batch.add(module);
-            batchAxioms.add(axioms);
-            batchIndividuals += module.members.size();
-            if (batchIndividuals >= BATCH_INDIVIDUALS) {
-                reason(batch, batchAxioms, done);
-                batch = new ArrayList<>();
-                batchAxioms = new ArrayList<>();
-                batchIndividuals = 0;
+            batch.add(module, axioms, shape);
+            if (batch.individuals >= BATCH_INDIVIDUALS) {
+                reason(batch.modules, batch.axioms, batch.shapes, done);
+                batch = new Batch();
             }
         }
-        if (!batch.isEmpty()) {
-            reason(batch, batchAxioms, done);
+        if (!batch.modules.isEmpty()) {
+            reason(batch.modules, batch.axioms, batch.shapes, done);
         }
+        followers.values().forEach(waiting -> waiting.forEach(module ->
+                done.add(shapes.lookup(module, shapeOf.get(module)))));
         return done;
+    }
+
+    /** Modules to reason on together, with their assertions and shapes (null: not compared). */
+    private static final class Batch {
+        final List<Module> modules = new ArrayList<>();
+        final List<Set<OWLAxiom>> axioms = new ArrayList<>();
+        final List<ModuleShapes.Shape> shapes = new ArrayList<>();
+        int individuals;
+
+        void add(Module module, Set<OWLAxiom> moduleAxioms, ModuleShapes.Shape shape) {
+            modules.add(module);
+            axioms.add(moduleAxioms);
+            shapes.add(shape);
+            individuals += module.members.size();
+        }
+    }
+
+    /** How many modules took the result of an earlier module of the same shape. */
+    long reusedShapes() {
+        return shapes.reused();
     }
 
     /** Forgets an interruption of an earlier update: call before each new one. */
@@ -115,7 +132,8 @@ final class ModuleRealiser {
         }
     }
 
-    private void reason(List<Module> batch, List<Set<OWLAxiom>> axioms, List<Realised> done) {
+    private void reason(List<Module> batch, List<Set<OWLAxiom>> axioms, List<ModuleShapes.Shape> shapesOf,
+                        List<Realised> done) {
         checkInterrupted();
         Set<OWLAxiom> union = new LinkedHashSet<>();
         axioms.forEach(union::addAll);
@@ -140,17 +158,18 @@ final class ModuleRealiser {
         });
         if (found != null) {
             for (int i = 0; i < batch.size(); i++) {
-                remember(batch.get(i), axioms.get(i), found.get(i));
+                remember(shapesOf.get(i), found.get(i));
             }
             done.addAll(found);
         } else if (batch.size() == 1) {
             Realised inconsistent = new Realised(batch.get(0), false, Map.of());
-            remember(batch.get(0), axioms.get(0), inconsistent);
+            remember(shapesOf.get(0), inconsistent);
             done.add(inconsistent);
         } else {
             int half = batch.size() / 2;
-            reason(batch.subList(0, half), axioms.subList(0, half), done);
-            reason(batch.subList(half, batch.size()), axioms.subList(half, axioms.size()), done);
+            reason(batch.subList(0, half), axioms.subList(0, half), shapesOf.subList(0, half), done);
+            reason(batch.subList(half, batch.size()), axioms.subList(half, axioms.size()),
+                    shapesOf.subList(half, shapesOf.size()), done);
         }
     }
 
@@ -195,42 +214,9 @@ final class ModuleRealiser {
         }
     }
 
-    /** The result of a one-individual module whose shape was reasoned on before, or null. */
-    private Realised byShape(Module module, Set<OWLAxiom> axioms) {
-        OWLNamedIndividual individual = soleNamedMember(module);
-        if (individual == null) {
-            return null;
+    private void remember(ModuleShapes.Shape shape, Realised realised) {
+        if (shape != null) {
+            shapes.remember(shape, realised);
         }
-        Shape shape = shapes.get(shapeKey(individual, axioms));
-        if (shape == null) {
-            return null;
-        }
-        return new Realised(module, shape.consistent(), shape.consistent() ? Map.of(individual, shape.types()) : Map.of());
-    }
-
-    private void remember(Module module, Set<OWLAxiom> axioms, Realised realised) {
-        OWLNamedIndividual individual = soleNamedMember(module);
-        if (individual != null) {
-            shapes.put(shapeKey(individual, axioms), new Shape(realised.consistent(),
-                    realised.consistent() ? realised.types().get(individual) : null));
-        }
-    }
-
-    private static OWLNamedIndividual soleNamedMember(Module module) {
-        if (!module.isSingleton()) {
-            return null;
-        }
-        var only = module.members.iterator().next();
-        return only.isNamed() ? only.asOWLNamedIndividual() : null;
-    }
-
-    /** The module's assertions with its individual renamed to one placeholder: equal keys, equal types. */
-    private Set<OWLAxiom> shapeKey(OWLNamedIndividual individual, Set<OWLAxiom> axioms) {
-        OWLObjectDuplicator renamer = new OWLObjectDuplicator(Map.<OWLEntity, IRI>of(individual, PLACEHOLDER), scratch);
-        Set<OWLAxiom> key = new LinkedHashSet<>();
-        for (OWLAxiom axiom : axioms) {
-            key.add(renamer.duplicateObject(axiom));
-        }
-        return Set.copyOf(key);
     }
 }

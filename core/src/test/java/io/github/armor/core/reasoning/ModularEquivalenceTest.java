@@ -115,6 +115,62 @@ class ModularEquivalenceTest {
         modular.dispose();
     }
 
+    /**
+     * The robot's workload: rooms with agents in them, agents moving between rooms, some robots
+     * low on battery; many modules share a shape, so most take an earlier module's result.
+     */
+    @ParameterizedTest(name = "{0}, seed {1}, {2} moves")
+    @CsvSource({"HERMIT, 11, 80", "PELLET, 12, 80", "JFACT, 13, 40"})
+    void agentsMovingBetweenRoomsMatchAFreshReasoner(String reasonerName, long seed, int moves) throws Exception {
+        random.setSeed(seed);
+        manager = OWLManager.createOWLOntologyManager();
+        factory = manager.getOWLDataFactory();
+        ontology = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(SCHEMA));
+        OWLObjectProperty isIn = factory.getOWLObjectProperty(IRI.create(NS + "isIn"));
+        OWLObjectProperty connectedTo = factory.getOWLObjectProperty(IRI.create(NS + "connectedTo"));
+        List<OWLNamedIndividual> rooms = new ArrayList<>();
+        List<OWLNamedIndividual> agents = new ArrayList<>();
+        List<OWLAxiom> abox = new ArrayList<>();
+        for (int i = 0; i < 12; i++) {
+            OWLNamedIndividual room = factory.getOWLNamedIndividual(IRI.create(NS + "room" + i));
+            abox.add(factory.getOWLClassAssertionAxiom(cls("Room"), room));
+            if (i > 0) {
+                abox.add(factory.getOWLObjectPropertyAssertionAxiom(connectedTo, room, rooms.get(i - 1)));
+            }
+            rooms.add(room);
+        }
+        for (int i = 0; i < 40; i++) {
+            OWLNamedIndividual agent = factory.getOWLNamedIndividual(IRI.create(NS + "agent" + i));
+            abox.add(factory.getOWLClassAssertionAxiom(cls(i % 4 == 0 ? "Person" : "Robot"), agent));
+            abox.add(factory.getOWLObjectPropertyAssertionAxiom(isIn, agent, rooms.get(i % 6)));
+            agents.add(agent);
+        }
+        manager.addAxioms(ontology, abox.stream());
+        OWLReasonerFactory reasonerFactory = ReasonerRegistry.factory(reasonerName);
+        ModularReasoner modular = new ModularReasoner(reasonerName, reasonerFactory, ontology, new SimpleConfiguration());
+        compare(reasonerFactory, modular, "the loaded ABox");
+        for (int move = 0; move < moves; move++) {
+            OWLNamedIndividual agent = agents.get(random.nextInt(agents.size()));
+            OWLAxiom from = ontology.objectPropertyAssertionAxioms(agent).findFirst().orElseThrow();
+            List<OWLOntologyChange> changes = new ArrayList<>(List.of(new RemoveAxiom(ontology, from),
+                    new AddAxiom(ontology, factory.getOWLObjectPropertyAssertionAxiom(isIn, agent,
+                            rooms.get(random.nextInt(rooms.size()))))));
+            if (random.nextInt(5) == 0) {
+                changes.add(toggle(factory.getOWLDataPropertyAssertionAxiom(factory.getOWLDataProperty(
+                        IRI.create(NS + "batteryLevel")), agents.get(random.nextInt(agents.size())), 10)));
+            }
+            if (random.nextInt(8) == 0) {
+                changes.add(toggle(factory.getOWLClassAssertionAxiom(cls("RobotOnly"),
+                        rooms.get(random.nextInt(rooms.size())))));
+            }
+            manager.applyChanges(changes);
+            modular.flush();
+            compare(reasonerFactory, modular, "move " + move + " " + changes);
+        }
+        assertTrue(modular.reusedShapes() > moves, "rooms alike must share results: " + modular.reusedShapes());
+        modular.dispose();
+    }
+
     private void compare(OWLReasonerFactory reasonerFactory, ModularReasoner modular, String after) {
         OWLReasoner truth = reasonerFactory.createReasoner(ontology);
         try {
