@@ -139,11 +139,11 @@ def measure_busy_reads(scratch: pathlib.Path, snapshot: CoreSnapshot, individual
 
 
 def measure_memory(scratch: pathlib.Path, snapshot: CoreSnapshot, individuals: int,
-                   cycles: int, budget_s: float) -> Dict[str, dict]:
+                   cycles: int, budget_s: float, variants: int) -> Dict[str, dict]:
     """Core peak memory and cycle of the robot's mode (modular Openllet) per JVM option set."""
     abox_path = RoboticsABox(individuals).write(scratch / f'abox{individuals}.owl')
     results = {}
-    for label, (java_bin, options) in JVM_VARIANTS.items():
+    for label, (java_bin, options) in list(JVM_VARIANTS.items())[:variants]:
         if java_bin is not None and not (java_bin / 'java').exists():
             results[label] = {'note': f'{java_bin} not installed'}
             continue
@@ -176,7 +176,7 @@ def main():
     print(measure_busy_reads(scratch, snapshot, scale.busy_abox, scale.busy_idle_calls,
                              scale.busy_writes, scale.busy_budget_s))
     print(measure_memory(scratch, snapshot, max(scale.abox_sizes), scale.cycles,
-                         scale.cycle_budget_s[max(scale.abox_sizes)]))
+                         scale.cycle_budget_s[max(scale.abox_sizes)], scale.jvm_variants))
 
 
 if __name__ == '__main__':
