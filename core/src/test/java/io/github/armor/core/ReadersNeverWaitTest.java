@@ -40,7 +40,8 @@ class ReadersNeverWaitTest {
     /** The standard commands plus one that moves robot1 to the bedroom, then holds the reference until told. */
     private CommandTable withSlowWriter() {
         CommandTable table = CommandTable.standard();
-        table.command("TEST MOVE SLOWLY").args("prop", "ind", "new room", "old room").summary("moves robot1 and keeps the reference").manipulation(c -> {
+        table.command("TEST MOVE SLOWLY").args("prop", "ind", "new room", "old room")
+                .summary("moves an agent and keeps the reference").manipulation(c -> {
             OWLDataFactory factory = c.factory();
             OWLObjectProperty isIn = c.objectProperty(0);
             OWLNamedIndividual robot = c.individual(1);

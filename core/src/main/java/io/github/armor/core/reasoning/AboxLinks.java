@@ -121,7 +121,8 @@ final class AboxLinks {
         if (axiom.isOfType(AxiomType.HAS_KEY)) {
             return "keys (HasKey)";
         }
-        if (axiom.individualsInSignature().findAny().isPresent() || axiom.anonymousIndividuals().findAny().isPresent()) {
+        if (axiom.individualsInSignature().findAny().isPresent()
+                || axiom.anonymousIndividuals().findAny().isPresent()) {
             return "individuals named in the schema (nominals)";
         }
         if (axiom.objectPropertiesInSignature().anyMatch(OWLObjectProperty::isOWLTopObjectProperty)) {
@@ -167,7 +168,8 @@ final class AboxLinks {
                     if (linking.contains(sub.getSuperProperty().getNamedProperty())) {
                         grew |= linking.add(sub.getSubProperty().getNamedProperty());
                     }
-                } else if (axiom instanceof OWLNaryPropertyAxiom<?> || axiom.isOfType(AxiomType.INVERSE_OBJECT_PROPERTIES)) {
+                } else if (axiom instanceof OWLNaryPropertyAxiom<?>
+                        || axiom.isOfType(AxiomType.INVERSE_OBJECT_PROPERTIES)) {
                     List<OWLObjectProperty> members = axiom.objectPropertiesInSignature().toList();
                     if (members.stream().anyMatch(linking::contains)) {
                         for (OWLObjectProperty member : members) {

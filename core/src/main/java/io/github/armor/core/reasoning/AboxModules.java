@@ -52,9 +52,13 @@ final class AboxModules {
     private final OWLDataFactory factory;
     private final Map<OWLIndividual, Module> moduleOf = new HashMap<>();
     private final Set<Module> inconsistent = new LinkedHashSet<>();
+    // Without imports the ontology's own index answers (the closure's costs a stream per lookup);
+    // an import change is a schema change, after which the modules are made anew.
+    private final Imports imports;
 
     AboxModules(OWLOntology ontology, AboxLinks links) {
         this.ontology = ontology;
+        this.imports = ontology.importsDeclarations().findAny().isPresent() ? Imports.INCLUDED : Imports.EXCLUDED;
         this.links = links;
         this.factory = ontology.getOWLOntologyManager().getOWLDataFactory();
     }
@@ -151,8 +155,8 @@ final class AboxModules {
     }
 
     private Stream<OWLAxiom> referencing(OWLIndividual individual) {
-        return individual.isNamed() ? ontology.referencingAxioms(individual.asOWLNamedIndividual(), Imports.INCLUDED)
-                : ontology.referencingAxioms(individual.asOWLAnonymousIndividual(), Imports.INCLUDED);
+        return individual.isNamed() ? ontology.referencingAxioms(individual.asOWLNamedIndividual(), imports)
+                : ontology.referencingAxioms(individual.asOWLAnonymousIndividual(), imports);
     }
 
     private Module grow(OWLIndividual seed) {

@@ -5,14 +5,11 @@ import io.github.armor.core.reasoning.AboxModules.Module;
 import io.github.armor.core.reasoning.AboxModules.Repartition;
 import io.github.armor.core.reasoning.ModuleRealiser.Realised;
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import java.util.Set;
-import java.util.WeakHashMap;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.semanticweb.owlapi.model.AxiomType;
@@ -75,8 +72,6 @@ import org.slf4j.LoggerFactory;
 public final class ModularReasoner implements OWLReasoner {
     private static final Logger LOG = LoggerFactory.getLogger(ModularReasoner.class);
     private static final Set<String> UNDERLYING = Set.of("HERMIT", "PELLET", "OPENLLET", "JFACT");
-    // Ontologies on which a module failed where the whole did not: reasoned on whole from then on.
-    private static final Map<OWLOntology, Boolean> WHOLE_ONLY = Collections.synchronizedMap(new WeakHashMap<>());
 
     private enum Mode { NOT_REASONED, MODULAR, WHOLE }
 
@@ -113,9 +108,6 @@ public final class ModularReasoner implements OWLReasoner {
         this.configuration = configuration;
         this.closure = ontology.importsClosure().collect(Collectors.toSet());
         ontology.getOWLOntologyManager().addOntologyChangeListener(listener);
-        if (WHOLE_ONLY.containsKey(ontology)) {
-            reasonOnWhole("a module failed on this ontology before");
-        }
     }
 
     /**
@@ -277,7 +269,6 @@ public final class ModularReasoner implements OWLReasoner {
             mode = Mode.NOT_REASONED;
             throw e;
         } catch (RuntimeException e) {
-            WHOLE_ONLY.put(ontology, true);
             reasonOnWhole("a module failed: " + e);
         }
     }

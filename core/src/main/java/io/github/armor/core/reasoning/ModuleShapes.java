@@ -62,19 +62,19 @@ final class ModuleShapes {
         if (module.members.size() > LARGEST || module.members.stream().anyMatch(OWLIndividual::isAnonymous)) {
             return null;
         }
-        Map<OWLIndividual, List<String>> roles = new HashMap<>();
+        Map<OWLIndividual, List<Long>> roles = new HashMap<>();
         for (OWLAxiom axiom : axioms) {
             List<OWLIndividual> about = AboxLinks.individualsOf(axiom).toList();
-            String what = describe(axiom);
+            long what = describe(axiom);
             for (int position = 0; position < about.size(); position++) {
-                roles.computeIfAbsent(about.get(position), k -> new ArrayList<>()).add(what + "@" + position);
+                roles.computeIfAbsent(about.get(position), k -> new ArrayList<>()).add(what * 8 + position);
             }
         }
         Map<OWLNamedIndividual, String> signature = new HashMap<>();
         module.namedMembers().forEach(member -> {
-            List<String> own = roles.getOrDefault(member, new ArrayList<>());
+            List<Long> own = roles.getOrDefault(member, new ArrayList<>());
             own.sort(null);
-            signature.put(member, String.join(";", own));
+            signature.put(member, own.toString());
         });
         List<OWLNamedIndividual> order = new ArrayList<>(signature.keySet());
         order.sort(Comparator.comparing((OWLNamedIndividual member) -> signature.get(member))
@@ -119,15 +119,20 @@ final class ModuleShapes {
         known.put(shape.key(), new Outcome(realised.consistent(), types));
     }
 
-    /** What an assertion says apart from its individuals, for ordering them. */
-    private static String describe(OWLAxiom axiom) {
+    /**
+     * What an assertion says apart from its individuals, as a number for ordering them (content
+     * hash codes: equal assertions up to individuals give equal numbers; a collision only costs
+     * a missed match).
+     */
+    private static long describe(OWLAxiom axiom) {
+        long kind = axiom.getAxiomType().getIndex();
         if (axiom instanceof OWLClassAssertionAxiom assertion) {
-            return "a " + assertion.getClassExpression();
+            return kind << 32 | assertion.getClassExpression().hashCode() & 0xffffffffL;
         }
         if (axiom instanceof OWLPropertyAssertionAxiom<?, ?> assertion) {
-            String value = assertion.getObject() instanceof OWLIndividual ? "" : " " + assertion.getObject();
-            return axiom.getAxiomType() + " " + assertion.getProperty() + value;
+            int value = assertion.getObject() instanceof OWLIndividual ? 0 : assertion.getObject().hashCode();
+            return kind << 32 | (assertion.getProperty().hashCode() * 31 + value) & 0xffffffffL;
         }
-        return axiom.getAxiomType().toString();
+        return kind << 32;
     }
 }

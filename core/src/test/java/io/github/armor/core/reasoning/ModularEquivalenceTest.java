@@ -94,7 +94,8 @@ class ModularEquivalenceTest {
             addIndividual();
         }
         OWLReasonerFactory reasonerFactory = ReasonerRegistry.factory(reasonerName);
-        ModularReasoner modular = new ModularReasoner(reasonerName, reasonerFactory, ontology, new SimpleConfiguration());
+        ModularReasoner modular = new ModularReasoner(reasonerName, reasonerFactory, ontology,
+                new SimpleConfiguration());
         compare(reasonerFactory, modular, "the loaded ABox");
         int modularSteps = 0;
         for (int step = 0; step < steps; step++) {
@@ -147,7 +148,8 @@ class ModularEquivalenceTest {
         }
         manager.addAxioms(ontology, abox.stream());
         OWLReasonerFactory reasonerFactory = ReasonerRegistry.factory(reasonerName);
-        ModularReasoner modular = new ModularReasoner(reasonerName, reasonerFactory, ontology, new SimpleConfiguration());
+        ModularReasoner modular = new ModularReasoner(reasonerName, reasonerFactory, ontology,
+                new SimpleConfiguration());
         compare(reasonerFactory, modular, "the loaded ABox");
         for (int move = 0; move < moves; move++) {
             OWLNamedIndividual agent = agents.get(random.nextInt(agents.size()));
@@ -204,7 +206,8 @@ class ModularEquivalenceTest {
     private List<OWLOntologyChange> randomChanges() {
         // A nominal: the ontology cannot be split while it is there, for a few steps.
         OWLAxiom nominal = factory.getOWLSubClassOfAxiom(cls("Charger"),
-                factory.getOWLObjectHasValue(factory.getOWLObjectProperty(IRI.create(NS + "near")), individuals.get(0)));
+                factory.getOWLObjectHasValue(factory.getOWLObjectProperty(IRI.create(NS + "near")),
+                        individuals.get(0)));
         if (ontology.containsAxiom(nominal) && random.nextInt(4) == 0) {
             return List.of(new RemoveAxiom(ontology, nominal));
         }
