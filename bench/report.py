@@ -133,6 +133,48 @@ def _whole(run: Optional[dict]) -> str:
     return text + ('' if run['finished'] else f' ({run["note"]})')
 
 
+DIRECTION_NAMES = {
+    'rebuild:PELLET': 'Openllet on the whole ontology, rebuilt after a removal (before issue 15)',
+    'rebuild:HERMIT': 'HermiT on the whole ontology, rebuilt after a removal',
+    'openllet-incremental': 'Openllet incremental consistency and deletion, flushed',
+    'flush:HERMIT': 'HermiT on the whole ontology, flushed (its incremental ABox update)',
+    'flush:ELK': 'ELK, flushed (incremental; OWL 2 EL only)',
+    'modular:PELLET': 'modular reasoner over Openllet (this issue)',
+    'modular:HERMIT': 'modular reasoner over HermiT (this issue)',
+    'Konclude': 'Konclude (external process), realising the file',
+}
+
+
+def _directions(directions: Dict[str, dict], individuals: int) -> List[str]:
+    """The directions of issue 15 measured in-process on the same cycle, with what was kept."""
+    right = {name: d for name, d in directions.items() if d.get('cycles') and d.get('wrong') == 0}
+    modular = [d['cycle_p50_ms'] for name, d in right.items() if name.startswith('modular:')]
+    best = min(modular) if modular else None
+    rows = []
+    for name, figures in directions.items():
+        if not figures.get('cycles'):
+            verdict = 'not kept: ' + figures.get('note', 'no result')
+        elif figures.get('wrong'):
+            verdict = f'not kept: {figures["wrong"]} wrong answers of {figures["cycles"]}'
+        elif name.startswith('modular:'):
+            verdict = 'kept: the service\'s reasoner for references brought up to date after every change'
+        elif best:
+            verdict = (f'not kept: {figures["cycle_p50_ms"] / best:.0f}x the modular cycle'
+                       + ('; answers from scratch each time' if name == 'Konclude' else ''))
+        else:
+            verdict = '-'
+        rows.append([DIRECTION_NAMES.get(name, name), _ms(figures.get('first_ms')),
+                     _ms(figures.get('cycle_p50_ms')), _ms(figures.get('cycle_max_ms')),
+                     {0: 'yes'}.get(figures.get('wrong'), '**no**' if figures.get('cycles') else '-'),
+                     verdict])
+    return [f'### The directions of the issue, in-process ({individuals:,} individuals)', '',
+            'The same cycle (an agent moves, then the instances of OccupiedRoom) in one JVM with no '
+            'service around it (`ReasoningDirectionsBench`), one JVM per direction; "first" is '
+            'loading the reasoner up to the first answer. Every answer is checked.', '',
+            _table(['direction', 'first', 'cycle p50', 'cycle max', 'answers right', 'verdict'],
+                   rows), '']
+
+
 def _robot_speed(results: dict) -> List[str]:
     """Section 6: the table of issue 15, each figure beside its reference from the same run."""
     transport, reasoning, speed = results['transport'], results['reasoning'], results['robot_speed']
@@ -227,6 +269,8 @@ def _robot_speed(results: dict) -> List[str]:
     out += [_table(['reference', 'idle p50', 'busy reads', 'busy p50', 'busy max',
                     'marked with a revision', 'schema change p50', 'answers right', 'status'],
                    rows), '']
+    if 'directions' in speed:
+        out += _directions(speed['directions'], max(n for n in reasoning))
     out += [f'### JVM options and memory ({max(n for n in reasoning):,} individuals)', '',
             'The core\'s peak resident memory (VmHWM) with the ABox loaded and the robot\'s cycle '
             'run (PELLET, non-buffered, no REASON), one node per option set (each with '

@@ -9,13 +9,18 @@
   reference reasons for seconds (a schema change, which re-reasons every module), against the
   same query on the idle reference, and against a whole-ontology reference, where it waits.
 - The core's peak memory at 10,000 individuals (the robot's mode) under several JVM option sets.
+- The directions the issue names, in-process on the same cycle (ReasoningDirectionsBench):
+  rebuilding, Openllet's incremental consistency, flushing HermiT and ELK, the modular reasoner;
+  and Konclude realising the file from scratch.
 """
 
 import argparse
 import json
 import os
 import pathlib
+import shutil
 import statistics
+import subprocess
 import tempfile
 import threading
 import time
@@ -163,6 +168,58 @@ def measure_memory(scratch: pathlib.Path, snapshot: CoreSnapshot, individuals: i
     return results
 
 
+DIRECTIONS = ('rebuild:PELLET', 'rebuild:HERMIT', 'openllet-incremental', 'flush:HERMIT',
+              'flush:ELK', 'modular:PELLET', 'modular:HERMIT')
+DIRECTIONS_CLASS = 'io.github.armor.core.bench.ReasoningDirectionsBench'
+
+
+def measure_directions(scratch: pathlib.Path, snapshot: CoreSnapshot, individuals: int,
+                       cycles: int, budget_s: float) -> Dict[str, dict]:
+    """The cycle kept up to date by each direction of issue 15, in-process, one JVM each."""
+    workload = RoboticsABox(individuals)
+    abox_path = workload.write(scratch / f'abox{individuals}.owl')
+    moves = []
+    for _ in range(min(cycles, workload.moves_left)):
+        move = workload.next_move()
+        moves.append([move.agent, move.new_room, move.old_room, workload.occupied_rooms()])
+    moves_path = scratch / f'moves{individuals}.json'
+    moves_path.write_text(json.dumps(moves))
+    results = {}
+    for direction in DIRECTIONS:
+        try:
+            done = subprocess.run(['java', '-Xmx4g', '-cp', snapshot.classpath, DIRECTIONS_CLASS,
+                                   str(abox_path), str(moves_path), str(cycles), direction],
+                                  capture_output=True, text=True, timeout=budget_s)
+            lines = [line for line in done.stdout.splitlines() if line.startswith('{')]
+            results[direction] = (json.loads(lines[-1]) if lines else
+                                  {'note': f'failed: {done.stderr.strip()[-300:]}'})
+        except subprocess.TimeoutExpired:
+            results[direction] = {'note': f'did not finish within {budget_s:.0f} s'}
+    results['Konclude'] = _konclude(abox_path, individuals, budget_s)
+    return results
+
+
+def _konclude(abox_path: pathlib.Path, individuals: int, budget_s: float) -> dict:
+    """Konclude realising the same file from scratch, as an external backend would per change."""
+    konclude = shutil.which('Konclude')
+    if konclude is None:
+        return {'note': 'Konclude not installed (Debian package konclude)'}
+    output = abox_path.with_suffix('.konclude.xml')
+    start = time.perf_counter()
+    try:
+        subprocess.run([konclude, 'realization', '-w', 'AUTO', '-i', str(abox_path), '-o',
+                        str(output)], capture_output=True, timeout=budget_s, check=True)
+    except (subprocess.TimeoutExpired, subprocess.CalledProcessError) as error:
+        return {'note': f'Konclude failed: {error}'}
+    seconds = time.perf_counter() - start
+    occupied = output.read_text().count('OccupiedRoom"/>') - 1  # minus the declaration
+    expected = len(RoboticsABox(individuals).occupied_rooms())
+    return {'first_ms': seconds * 1000, 'cycle_p50_ms': seconds * 1000,
+            'wrong': 0 if occupied == expected else 1, 'cycles': 1,
+            'note': 'one realisation from the file; a change means another (no incremental ABox '
+                    'updates from the command line)'}
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
     parser.add_argument('--smoke', action='store_true', help='tiny sizes, a few seconds')
@@ -177,6 +234,8 @@ def main():
                              scale.busy_writes, scale.busy_budget_s))
     print(measure_memory(scratch, snapshot, max(scale.abox_sizes), scale.cycles,
                          scale.cycle_budget_s[max(scale.abox_sizes)], scale.jvm_variants))
+    print(measure_directions(scratch, snapshot, max(scale.abox_sizes), scale.cycles,
+                             scale.cycle_budget_s[max(scale.abox_sizes)]))
 
 
 if __name__ == '__main__':

@@ -103,6 +103,9 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
                                              scale.cycles,
                                              scale.cycle_budget_s[max(scale.abox_sizes)],
                                              scale.jvm_variants),
+        'directions': robot_speed.measure_directions(
+            scratch, snapshot, max(scale.abox_sizes), scale.cycles,
+            scale.cycle_budget_s[max(scale.abox_sizes)]),
     }
     stage('5. profiles')
     choice, _ = report.recommend(results['reasoning'])
