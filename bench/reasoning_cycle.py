@@ -200,8 +200,9 @@ def measure(abox_sizes, cycles: int, budgets: dict, owlready_budgets: dict,
         for label, factory_class in WHOLE_ONTOLOGY.items():
             node = BenchNode(scratch, snapshot)
             try:
-                service[label] = {ROBOT_MODE: _run_mode(node, abox_path, individuals, factory_class,
-                                                        ROBOT_MODE, cycles, budgets[individuals])}
+                service[label] = {ROBOT_MODE: _run_mode(node, abox_path, individuals,
+                                                        factory_class, ROBOT_MODE, cycles,
+                                                        budgets[individuals])}
             finally:
                 node.stop()
         owlready = {reasoner: _run_owlready(abox_path, individuals, reasoner, cycles,

@@ -112,7 +112,7 @@ ISSUE15_MEMORY_TARGET_MIB = 512
 
 
 def _best_modular(runs: Dict[str, dict]) -> Optional[Tuple[str, dict]]:
-    """The modular reasoner with the fastest cycle whose every answer was right, and its figures."""
+    """The modular reasoner with the fastest all-right cycle, and its figures."""
     best = None
     for reasoner, run in runs.items():
         figures = summarise(run)
@@ -157,7 +157,8 @@ def _directions(directions: Dict[str, dict], individuals: int) -> List[str]:
         elif figures.get('wrong'):
             verdict = f'not kept: {figures["wrong"]} wrong answers of {figures["cycles"]}'
         elif name.startswith('modular:'):
-            verdict = 'kept: the service\'s reasoner for references brought up to date after every change'
+            verdict = ('kept: the service\'s reasoner for references brought up to date after '
+                       'every change')
         elif best:
             verdict = (f'not kept: {figures["cycle_p50_ms"] / best:.0f}x the modular cycle'
                        + ('; answers from scratch each time' if name == 'Konclude' else ''))
@@ -165,11 +166,12 @@ def _directions(directions: Dict[str, dict], individuals: int) -> List[str]:
             verdict = '-'
         rows.append([DIRECTION_NAMES.get(name, name), _ms(figures.get('first_ms')),
                      _ms(figures.get('cycle_p50_ms')), _ms(figures.get('cycle_max_ms')),
-                     {0: 'yes'}.get(figures.get('wrong'), '**no**' if figures.get('cycles') else '-'),
+                     {0: 'yes'}.get(figures.get('wrong'),
+                                    '**no**' if figures.get('cycles') else '-'),
                      verdict])
     return [f'### The directions of the issue, in-process ({individuals:,} individuals)', '',
-            'The same cycle (an agent moves, then the instances of OccupiedRoom) in one JVM with no '
-            'service around it (`ReasoningDirectionsBench`), one JVM per direction; "first" is '
+            'The same cycle (an agent moves, then the instances of OccupiedRoom) in one JVM with '
+            'no service around it (`ReasoningDirectionsBench`), one JVM per direction; "first" is '
             'loading the reasoner up to the first answer. Every answer is checked.', '',
             _table(['direction', 'first', 'cycle p50', 'cycle max', 'answers right', 'verdict'],
                    rows), '']
@@ -177,7 +179,8 @@ def _directions(directions: Dict[str, dict], individuals: int) -> List[str]:
 
 def _robot_speed(results: dict) -> List[str]:
     """Section 6: the table of issue 15, each figure beside its reference from the same run."""
-    transport, reasoning, speed = results['transport'], results['reasoning'], results['robot_speed']
+    transport, reasoning = results['transport'], results['reasoning']
+    speed = results['robot_speed']
     whole_label = next(iter(WHOLE_ONTOLOGY))
     rows = []
     for individuals, target in ISSUE15_CYCLE_TARGET_MS.items():
@@ -206,18 +209,21 @@ def _robot_speed(results: dict) -> List[str]:
         service, floor = transport[command]['service'], transport[command]['floor']
         ratio = service['p50_ms'] / floor['p50_ms']
         rows.append([label, f'{_ms(service["p50_ms"])} = {ratio:.2f}x echo',
-                     f'echo floor {_ms(floor["p50_ms"])}', f'<= {target}x echo', _met(ratio <= target)])
+                     f'echo floor {_ms(floor["p50_ms"])}', f'<= {target}x echo',
+                     _met(ratio <= target)])
     busy = speed['busy']
     modular, whole = busy.get('PELLET', {}), busy.get(whole_label, {})
     if modular.get('busy_p50_ms'):
         ratio = modular['busy_p50_ms'] / modular['idle_p50_ms']
         rows.append(['QUERY on reference A while A reasons for seconds',
-                     f'{_ms(modular["busy_p50_ms"])} = {ratio:.2f}x idle ({_ms(modular["idle_p50_ms"])}); '
-                     f'{modular["marked"]} of {modular["busy_reads"]} marked with a revision',
+                     f'{_ms(modular["busy_p50_ms"])} = {ratio:.2f}x idle '
+                     f'({_ms(modular["idle_p50_ms"])}); {modular["marked"]} of '
+                     f'{modular["busy_reads"]} marked with a revision',
                      f'{whole_label}: ' + (f'{_ms(whole["busy_p50_ms"])} (waits for the reasoner)'
                                            if whole.get('busy_p50_ms') else 'no read overlapped'),
                      f'<= {ISSUE15_BUSY_TARGET}x idle, marked',
-                     _met(ratio <= ISSUE15_BUSY_TARGET and modular['marked'] > 0 and modular['right'])])
+                     _met(ratio <= ISSUE15_BUSY_TARGET and modular['marked'] > 0
+                          and modular['right'])])
     ten = max((n for n in reasoning if n <= 10000), default=None)
     if ten:
         service = reasoning[ten]['service']
@@ -230,13 +236,13 @@ def _robot_speed(results: dict) -> List[str]:
                          f'<= {ISSUE15_MEMORY_TARGET_MIB} MiB',
                          _met(core['peak_mib'] <= ISSUE15_MEMORY_TARGET_MIB)])
     out = ['## 6. Reasoning at robot speed (issue 15)', '',
-           'A reference with a complete reasoner (HermiT, Openllet, JFact) brought up to date after '
-           'every change keeps every individual\'s types and, after an ABox change, reasons only on '
-           'the modules the change reaches: the parts of the ABox tied together by properties the '
-           'schema can propagate along (here an agent and its room; `connectedTo` ties nothing). '
-           'Modules alike share one reasoning. Answers equal a fresh reasoner on the whole '
-           'ontology (randomised equivalence test in `make test`). The reference rows run the same '
-           'workload through the reasoner named by its factory class '
+           'A reference with a complete reasoner (HermiT, Openllet, JFact) brought up to date '
+           'after every change keeps every individual\'s types and, after an ABox change, reasons '
+           'only on the modules the change reaches: the parts of the ABox tied together by '
+           'properties the schema can propagate along (here an agent and its room; `connectedTo` '
+           'ties nothing). Modules alike share one reasoning. Answers equal a fresh reasoner on '
+           'the whole ontology (randomised equivalence test in `make test`). The reference rows '
+           'run the same workload through the reasoner named by its factory class '
            f'(`{WHOLE_ONTOLOGY[whole_label]}`), which the service uses as it did before: on the '
            'whole ontology, rebuilt after every removal.', '',
            _table(['figure', 'this run', 'reference (same run)', 'target', 'met'], rows), '']
@@ -250,9 +256,10 @@ def _robot_speed(results: dict) -> List[str]:
                      {True: 'yes', False: '**no**', None: '-'}[figures['correct']],
                      f'{run["memory"]["core"]["peak_mib"]:,.0f} MiB' if 'memory' in run else '-',
                      run['note'] or 'finished'])
-    out += [_table(['reasoner', 'load', 'first', 'cycles', 'cycle p50', 'cycle max', 'answers right',
-                    'core peak', 'status'], rows), '']
-    out += [f'### Reads while the reference reasons ({speed["busy_individuals"]:,} individuals)', '',
+    out += [_table(['reasoner', 'load', 'first', 'cycles', 'cycle p50', 'cycle max',
+                    'answers right', 'core peak', 'status'], rows), '']
+    out += [f'### Reads while the reference reasons ({speed["busy_individuals"]:,} '
+            'individuals)', '',
             'A second client asks QUERY IND CLASS OccupiedRoom, first on the idle reference, then '
             'over and over while the first client changes the schema (ADD / REMOVE CLASS CLASS '
             'Vehicle Agent), after which every module is reasoned on again (the whole ontology, '
@@ -275,11 +282,13 @@ def _robot_speed(results: dict) -> List[str]:
             'The core\'s peak resident memory (VmHWM) with the ABox loaded and the robot\'s cycle '
             'run (PELLET, non-buffered, no REASON), one node per option set (each with '
             '`-XX:+ExitOnOutOfMemoryError`). Compact object headers need JDK 24 or later; the '
-            'project\'s Java is 17, so that row runs the same core on the JDK 25 installed here.', '']
+            'project\'s Java is 17, so that row runs the same core on the JDK 25 installed '
+            'here.', '']
     rows = []
     for label, figures in speed['memory'].items():
-        rows.append([f'`{label}`', f'{figures["core_peak_mib"]:,.0f} MiB' if 'core_peak_mib' in figures
-                     else '-', _seconds(figures.get('load_s')), _ms(figures.get('cycle_p50_ms')),
+        peak = figures.get('core_peak_mib')
+        rows.append([f'`{label}`', f'{peak:,.0f} MiB' if peak else '-',
+                     _seconds(figures.get('load_s')), _ms(figures.get('cycle_p50_ms')),
                      _ms(figures.get('cycle_max_ms')),
                      {True: 'yes', False: '**no**', None: '-'}[figures.get('correct')],
                      figures.get('note') or 'finished'])

@@ -156,7 +156,8 @@ def measure_memory(scratch: pathlib.Path, snapshot: CoreSnapshot, individuals: i
         if java_bin is not None:  # the node starts the core with the first java on PATH
             os.environ['PATH'] = f'{java_bin}:{path}'
         try:
-            node = BenchNode(scratch, snapshot, parameters={'jvm_options': _jvm_parameter(options)})
+            node = BenchNode(scratch, snapshot,
+                             parameters={'jvm_options': _jvm_parameter(options)})
         finally:
             os.environ['PATH'] = path
         try:

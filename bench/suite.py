@@ -3,11 +3,12 @@
 
     python bench/suite.py [--scale full|smoke] [--report bench/REPORT.md]
 
-`make bench` runs it at full scale (about half an hour on 2 cores) and writes bench/REPORT.md.
-`--scale smoke` runs every benchmark on tiny sizes in about a minute and a half
-(tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set with the
-environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
-(query_latency.py, batch_throughput.py, reasoning_cycle.py, robot_speed.py, core_profile.py).
+`make bench` runs it at full scale (about 45 minutes on 2 cores) and writes bench/REPORT.md.
+`--scale smoke` runs every benchmark on tiny sizes in about three minutes
+(tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set
+with the environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
+(query_latency.py, batch_throughput.py, reasoning_cycle.py, robot_speed.py,
+core_profile.py).
 """
 
 import argparse

@@ -16,6 +16,7 @@ import org.semanticweb.owlapi.model.AxiomType;
 import org.semanticweb.owlapi.model.OWLAxiom;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLClassExpression;
+import org.semanticweb.owlapi.model.OWLDataFactory;
 import org.semanticweb.owlapi.model.OWLDataProperty;
 import org.semanticweb.owlapi.model.OWLDataPropertyExpression;
 import org.semanticweb.owlapi.model.OWLDeclarationAxiom;
@@ -291,19 +292,30 @@ public final class ModularReasoner implements OWLReasoner {
 
     /** Schema axioms and ABox axioms that can make properties link (see {@link AboxLinks#shapesLinks}). */
     private Stream<OWLAxiom> linkShapingAxioms() {
-        return Stream.concat(ontology.axioms(Imports.INCLUDED)
-                        .filter(a -> a.isLogicalAxiom() && !a.isOfType(AxiomType.ABoxAxiomTypes)),
+        return Stream.concat(logicalSchemaAxioms(),
                 Stream.concat(ontology.axioms(AxiomType.CLASS_ASSERTION, Imports.INCLUDED),
                         ontology.axioms(AxiomType.NEGATIVE_OBJECT_PROPERTY_ASSERTION, Imports.INCLUDED))
                         .filter(AboxLinks::shapesLinks));
     }
 
-    /** What every module is reasoned with: the logical axioms that are not assertions, and the declarations. */
+    /** The logical axioms that are not assertions, through the index by kind (not every assertion). */
+    private Stream<OWLAxiom> logicalSchemaAxioms() {
+        return AxiomType.AXIOM_TYPES.stream()
+                .filter(type -> type.isLogical() && !AxiomType.ABoxAxiomTypes.contains(type))
+                .flatMap(type -> ontology.axioms(type, Imports.INCLUDED).map(OWLAxiom.class::cast));
+    }
+
+    /**
+     * What every module is reasoned with: the logical axioms that are not assertions, and a
+     * declaration of every class, property and datatype (so a module's signature is the whole
+     * ontology's, individuals apart).
+     */
     private List<OWLAxiom> schemaAxioms() {
-        return ontology.axioms(Imports.INCLUDED)
-                .filter(a -> a.isLogicalAxiom() && !a.isOfType(AxiomType.ABoxAxiomTypes)
-                        || a instanceof OWLDeclarationAxiom d && !d.getEntity().isOWLNamedIndividual())
-                .distinct().toList();
+        OWLDataFactory data = ontology.getOWLOntologyManager().getOWLDataFactory();
+        Stream<OWLAxiom> declarations = ontology.signature(Imports.INCLUDED)
+                .filter(entity -> !entity.isOWLNamedIndividual() && !entity.isBuiltIn())
+                .map(data::getOWLDeclarationAxiom);
+        return Stream.concat(logicalSchemaAxioms(), declarations).distinct().toList();
     }
 
     /** The kept types, brought up to date first (the first question reasons on every module). */
