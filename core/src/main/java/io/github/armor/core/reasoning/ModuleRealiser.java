@@ -4,6 +4,7 @@ package io.github.armor.core.reasoning;
 import io.github.armor.core.reasoning.AboxModules.Module;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -64,9 +65,10 @@ final class ModuleRealiser {
     List<Realised> realise(List<Module> modules, Function<Module, Set<OWLAxiom>> axiomsOf) {
         List<Realised> done = new ArrayList<>();
         Batch batch = new Batch();
-        // Modules shaped like one already waiting in the batch take its result afterwards.
-        Map<Set<OWLAxiom>, List<Module>> followers = new HashMap<>();
-        Map<Module, ModuleShapes.Shape> shapeOf = new HashMap<>();
+        // A module shaped like one waiting to be reasoned on takes that one's result afterwards.
+        Map<Set<OWLAxiom>, Module> firstOfShape = new HashMap<>();
+        Map<Module, List<Module>> followers = new IdentityHashMap<>();
+        Map<Module, ModuleShapes.Shape> shapeOf = new IdentityHashMap<>();
         for (Module module : modules) {
             Set<OWLAxiom> axioms = axiomsOf.apply(module);
             ModuleShapes.Shape shape = shapes.shapeOf(module, axioms);
@@ -76,13 +78,12 @@ final class ModuleRealiser {
                     done.add(known);
                     continue;
                 }
-                List<Module> waiting = followers.get(shape.key());
-                if (waiting != null) {
-                    waiting.add(module);
-                    shapeOf.put(module, shape);
+                shapeOf.put(module, shape);
+                Module first = firstOfShape.putIfAbsent(shape.key(), module);
+                if (first != null) {
+                    followers.computeIfAbsent(first, k -> new ArrayList<>()).add(module);
                     continue;
                 }
-                followers.put(shape.key(), new ArrayList<>());
             }
             batch.add(module, axioms, shape);
             if (batch.individuals >= BATCH_INDIVIDUALS) {
@@ -93,8 +94,12 @@ final class ModuleRealiser {
         if (!batch.modules.isEmpty()) {
             reason(batch.modules, batch.axioms, batch.shapes, done);
         }
-        followers.values().forEach(waiting -> waiting.forEach(module ->
-                done.add(shapes.lookup(module, shapeOf.get(module)))));
+        if (!followers.isEmpty()) {
+            Map<Module, Realised> byModule = new IdentityHashMap<>();
+            done.forEach(realised -> byModule.put(realised.module(), realised));
+            followers.forEach((first, others) -> others.forEach(other -> done.add(shapes.transfer(
+                    byModule.get(first), shapeOf.get(first), other, shapeOf.get(other)))));
+        }
         return done;
     }
 

@@ -113,6 +113,19 @@ final class ModuleShapes {
         return reused;
     }
 
+    /** The result of module {@code from} (shape {@code fromShape}) for module {@code to} of the same shape. */
+    ModuleRealiser.Realised transfer(ModuleRealiser.Realised from, Shape fromShape, Module to, Shape toShape) {
+        reused++;
+        if (!from.consistent()) {
+            return new ModuleRealiser.Realised(to, false, Map.of());
+        }
+        Map<OWLNamedIndividual, TypeProfile> types = new LinkedHashMap<>();
+        for (int i = 0; i < toShape.order().size(); i++) {
+            types.put(toShape.order().get(i), from.types().get(fromShape.order().get(i)));
+        }
+        return new ModuleRealiser.Realised(to, true, types);
+    }
+
     void remember(Shape shape, ModuleRealiser.Realised realised) {
         List<TypeProfile> types = realised.consistent()
                 ? shape.order().stream().map(realised.types()::get).toList() : List.of();
