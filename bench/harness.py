@@ -179,7 +179,7 @@ SCALES = {
                   batch_budget_s=45,
                   abox_sizes=[1000, 10000], cycles=20, cycle_budget_s={1000: 60, 10000: 120},
                   owlready_budget_s={1000: 90, 10000: 150}, profile_s=20,
-                  large_abox=100000, large_budget_s=240, busy_abox=10000, busy_idle_calls=200,
+                  large_abox=100000, large_budget_s=240, busy_abox=30000, busy_idle_calls=200,
                   busy_writes=4, busy_budget_s=240, jvm_variants=6),
     'smoke': Scale('smoke', latency_calls=20, batch_lists={10: 2, 100: 1}, warmup_lists=1,
                    batch_budget_s=5, abox_sizes=[20], cycles=1, cycle_budget_s={20: 15},
