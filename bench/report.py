@@ -429,8 +429,8 @@ def render(results: dict) -> str:
 
     out += ['## 4. Memory', '',
             'Peak resident memory (VmHWM) of the node (Python) and of its knowledge core (Java, '
-            'the node\'s default `jvm_options`) over the runs of benchmark 3, with the ABox loaded '
-            'and reasoned in every mode, one node per reasoner.', '']
+            'the node\'s default `jvm_options`) over the runs of benchmark 3, with the ABox '
+            'loaded and reasoned in every mode, one node per reasoner.', '']
     rows = []
     for individuals, sides in reasoning.items():
         for reasoner, modes in sides['service'].items():
