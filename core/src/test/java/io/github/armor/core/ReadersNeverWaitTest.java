@@ -77,13 +77,11 @@ class ReadersNeverWaitTest {
                 "isIn", "robot1", "bedroom", "kitchen"));
         assertTrue(writerInside.await(10, TimeUnit.SECONDS));
 
-        long start = System.nanoTime();
+        // A reader that waited would get 211 after the 300 ms bound: the writer holds on for 10 s.
         Response occupied = run("map", "QUERY IND CLASS", "OccupiedRoom");
         Response types = run("map", "QUERY CLASS IND", "robot2", "true");
-        long tookMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
-        assertTrue(tookMs < 250, "the readers waited " + tookMs + " ms (the bounded wait is 300 ms)");
+        assertTrue(occupied.success() && occupied.isConsistent(), occupied.errorDescription());
         assertEquals(iris("kitchen"), occupied.queriedObjects(), "the writer's unfinished move must not show");
-        assertTrue(occupied.success() && occupied.isConsistent());
         assertEquals(iris("Robot"), types.queriedObjects());
         assertEquals(iris("Agent", "Robot"), run("map", "QUERY IND", "robot2").queriedObjects());
         long before = revision(occupied);
