@@ -6,7 +6,6 @@ import java.util.Map;
 import java.util.Set;
 import java.util.stream.Collectors;
 import org.semanticweb.owlapi.model.OWLClass;
-import org.semanticweb.owlapi.reasoner.Node;
 import org.semanticweb.owlapi.reasoner.NodeSet;
 import org.semanticweb.owlapi.reasoner.impl.OWLClassNode;
 import org.semanticweb.owlapi.reasoner.impl.OWLClassNodeSet;
@@ -54,10 +53,5 @@ record TypeProfile(Set<Set<OWLClass>> all, Set<Set<OWLClass>> direct) {
         TypeProfile intern(TypeProfile profile) {
             return known.computeIfAbsent(profile, p -> p);
         }
-    }
-
-    /** The classes of a node set, for callers that only need membership. */
-    static Set<OWLClass> flat(NodeSet<OWLClass> nodeSet) {
-        return nodeSet.nodes().flatMap(Node::entities).collect(Collectors.toSet());
     }
 }
