@@ -171,14 +171,25 @@ class Scale:
     cycle_budget_s: Dict[int, float]     # per reasoner and mode, by ABox size
     owlready_budget_s: Dict[int, float]  # per owlready2 reasoner, by ABox size
     profile_s: float
+    large_abox: int                      # benchmark 6: the cycle at this size ...
+    large_budget_s: float                # ... per reasoner
+    busy_abox: int                       # benchmark 6: reads while the reference reasons
+    busy_idle_calls: int
+    busy_writes: int
+    busy_budget_s: float
+    jvm_variants: int                    # benchmark 6: how many JVM option sets (first ones)
 
 
 SCALES = {
     'full': Scale('full', latency_calls=2000, batch_lists={100: 30, 1000: 5}, warmup_lists=2,
                   batch_budget_s=45,
                   abox_sizes=[1000, 10000], cycles=20, cycle_budget_s={1000: 60, 10000: 120},
-                  owlready_budget_s={1000: 90, 10000: 150}, profile_s=20),
+                  owlready_budget_s={1000: 90, 10000: 150}, profile_s=20,
+                  large_abox=100000, large_budget_s=240, busy_abox=30000, busy_idle_calls=200,
+                  busy_writes=4, busy_budget_s=240, jvm_variants=6),
     'smoke': Scale('smoke', latency_calls=20, batch_lists={10: 2, 100: 1}, warmup_lists=1,
                    batch_budget_s=5, abox_sizes=[20], cycles=1, cycle_budget_s={20: 15},
-                   owlready_budget_s={20: 20}, profile_s=2),
+                   owlready_budget_s={20: 20}, profile_s=2, large_abox=200, large_budget_s=30,
+                   busy_abox=100, busy_idle_calls=5, busy_writes=2, busy_budget_s=30,
+                   jvm_variants=2),
 }

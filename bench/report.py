@@ -6,7 +6,7 @@ import statistics
 from typing import Dict, List, Optional, Tuple
 
 from harness import percentile
-from reasoning_cycle import MODES, summarise
+from reasoning_cycle import MODES, ROBOT_MODE, WHOLE_ONTOLOGY, summarise
 
 TRANSPORT_TARGET = 1.5   # service p50 / echo floor p50, at most
 BATCH_TARGET = 0.5       # service rate / in-process rate, at least
@@ -40,6 +40,8 @@ def recommend(reasoning: dict) -> Tuple[Optional[Tuple[str, str]], str]:
     sizes = sorted(reasoning)
     candidates = []
     for reasoner, modes in reasoning[sizes[-1]]['service'].items():
+        if reasoner in WHOLE_ONTOLOGY:  # the reference of before, not a setting to choose
+            continue
         for mode in modes:
             runs = [reasoning[size]['service'][reasoner][mode] for size in sizes]
             figures = [summarise(run) for run in runs]
@@ -101,6 +103,200 @@ def _slowest_part(transport: dict, batch: list, profiles: dict) -> str:
                  'query is cheap); the rest is the node\'s Python hand-offs between the ROS '
                  'executor, the core socket and its reader thread.')
     return text
+
+
+ISSUE15_CYCLE_TARGET_MS = {1000: 20, 10000: 50}
+ISSUE15_LARGE_TARGET = (1000, 60)  # cycle p50 ms, load s
+ISSUE15_ADD_TARGET = 2.0           # ADD p50 / echo floor p50, at most
+ISSUE15_QUERY_TARGET = 1.3         # QUERY p50 / echo floor p50, at most
+ISSUE15_BUSY_TARGET = 2.0          # busy QUERY p50 / idle QUERY p50, at most
+ISSUE15_MEMORY_TARGET_MIB = 512
+
+
+def _best_modular(runs: Dict[str, dict]) -> Optional[Tuple[str, dict]]:
+    """The modular reasoner with the fastest all-right cycle, and its figures."""
+    best = None
+    for reasoner, run in runs.items():
+        figures = summarise(run)
+        if reasoner in WHOLE_ONTOLOGY or not run['finished'] or not figures['cycles'] \
+                or not figures['correct']:
+            continue
+        if best is None or figures['cycle_p50_ms'] < best[1]['cycle_p50_ms']:
+            best = (reasoner, {**figures, 'load_s': run['load_s']})
+    return best
+
+
+def _whole(run: Optional[dict]) -> str:
+    if not run:
+        return '-'
+    figures = summarise(run)
+    text = f'{_ms(figures["cycle_p50_ms"])}' if figures['cycles'] else 'no cycle'
+    text += f', load {_seconds(run["load_s"])}' if run.get('load_s') is not None else ''
+    return text + ('' if run['finished'] else f' ({run["note"]})')
+
+
+DIRECTION_NAMES = {
+    'rebuild:PELLET': 'Openllet on the whole ontology, rebuilt after a removal (before issue 15)',
+    'rebuild:HERMIT': 'HermiT on the whole ontology, rebuilt after a removal',
+    'openllet-incremental': 'Openllet incremental consistency and deletion, flushed',
+    'flush:HERMIT': 'HermiT on the whole ontology, flushed (its incremental ABox update)',
+    'flush:ELK': 'ELK, flushed (incremental; OWL 2 EL only)',
+    'modular:PELLET': 'modular reasoner over Openllet (this issue)',
+    'modular:HERMIT': 'modular reasoner over HermiT (this issue)',
+    'Konclude': 'Konclude (external process), realising the file',
+}
+
+
+def _directions(directions: Dict[str, dict], individuals: int) -> List[str]:
+    """The directions of issue 15 measured in-process on the same cycle, with what was kept."""
+    right = {name: d for name, d in directions.items() if d.get('cycles') and d.get('wrong') == 0}
+    modular = [d['cycle_p50_ms'] for name, d in right.items() if name.startswith('modular:')]
+    best = min(modular) if modular else None
+    rows = []
+    for name, figures in directions.items():
+        if not figures.get('cycles'):
+            verdict = 'not kept: ' + figures.get('note', 'no result')
+        elif figures.get('wrong'):
+            verdict = f'not kept: {figures["wrong"]} wrong answers of {figures["cycles"]}'
+        elif name.startswith('modular:'):
+            verdict = ('kept: the service\'s reasoner for references brought up to date after '
+                       'every change')
+        elif best:
+            verdict = (f'not kept: {figures["cycle_p50_ms"] / best:.0f}x the modular cycle'
+                       + ('; answers from scratch each time' if name == 'Konclude' else ''))
+        else:
+            verdict = '-'
+        rows.append([DIRECTION_NAMES.get(name, name), _ms(figures.get('first_ms')),
+                     _ms(figures.get('cycle_p50_ms')), _ms(figures.get('cycle_max_ms')),
+                     {0: 'yes'}.get(figures.get('wrong'),
+                                    '**no**' if figures.get('cycles') else '-'),
+                     verdict])
+    return [f'### The directions of the issue, in-process ({individuals:,} individuals)', '',
+            'The same cycle (an agent moves, then the instances of OccupiedRoom) in one JVM with '
+            'no service around it (`ReasoningDirectionsBench`), one JVM per direction; "first" is '
+            'loading the reasoner up to the first answer. Every answer is checked.', '',
+            _table(['direction', 'first', 'cycle p50', 'cycle max', 'answers right', 'verdict'],
+                   rows), '']
+
+
+def _robot_speed(results: dict) -> List[str]:
+    """Section 7: the table of issue 15, each figure beside its reference from the same run."""
+    transport, reasoning = results['transport'], results['reasoning']
+    speed = results['robot_speed']
+    whole_label = next(iter(WHOLE_ONTOLOGY))
+    rows = []
+    for individuals, target in ISSUE15_CYCLE_TARGET_MS.items():
+        if individuals not in reasoning:
+            continue
+        service = reasoning[individuals]['service']
+        best = _best_modular({r: m[ROBOT_MODE] for r, m in service.items() if ROBOT_MODE in m})
+        whole = service.get(whole_label, {}).get(ROBOT_MODE)
+        rows.append([f'cycle p50, {individuals:,} individuals, complete answers',
+                     f'{_ms(best[1]["cycle_p50_ms"])} ({best[0]})' if best else 'no correct run',
+                     f'{whole_label}: {_whole(whole)}', f'<= {target} ms',
+                     _met(bool(best) and best[1]['cycle_p50_ms'] <= target)])
+    large = speed['large']
+    best = _best_modular(large)
+    cycle_target, load_target = ISSUE15_LARGE_TARGET
+    rows.append([f'cycle p50, {speed["large_individuals"]:,} individuals',
+                 f'{_ms(best[1]["cycle_p50_ms"])}, load {_seconds(best[1]["load_s"])} ({best[0]})'
+                 if best else 'no correct run',
+                 f'{whole_label}: {_whole(large.get(whole_label))}',
+                 f'<= {cycle_target / 1000:.0f} s, load <= {load_target} s',
+                 _met(bool(best) and best[1]['cycle_p50_ms'] <= cycle_target
+                      and best[1]['load_s'] <= load_target)])
+    for command, label, target in (('ADD', 'ADD round trip, default reference settings',
+                                    ISSUE15_ADD_TARGET),
+                                   ('QUERY', 'QUERY round trip', ISSUE15_QUERY_TARGET)):
+        service, floor = transport[command]['service'], transport[command]['floor']
+        ratio = service['p50_ms'] / floor['p50_ms']
+        rows.append([label, f'{_ms(service["p50_ms"])} = {ratio:.2f}x echo',
+                     f'echo floor {_ms(floor["p50_ms"])}', f'<= {target}x echo',
+                     _met(ratio <= target)])
+    busy = speed['busy']
+    modular, whole = busy.get('PELLET', {}), busy.get(whole_label, {})
+    if modular.get('busy_p50_ms'):
+        ratio = modular['busy_p50_ms'] / modular['idle_p50_ms']
+        rows.append(['QUERY on reference A while A reasons for seconds',
+                     f'{_ms(modular["busy_p50_ms"])} = {ratio:.2f}x idle '
+                     f'({_ms(modular["idle_p50_ms"])}); {modular["marked"]} of '
+                     f'{modular["busy_reads"]} marked with a revision',
+                     f'{whole_label}: ' + (f'{_ms(whole["busy_p50_ms"])} (waits for the reasoner)'
+                                           if whole.get('busy_p50_ms') else 'no read overlapped'),
+                     f'<= {ISSUE15_BUSY_TARGET}x idle, marked',
+                     _met(ratio <= ISSUE15_BUSY_TARGET and modular['marked'] > 0
+                          and modular['right'])])
+    ten = max((n for n in reasoning if n <= 10000), default=None)
+    if ten:
+        service = reasoning[ten]['service']
+        core = service.get('PELLET', {}).get(ROBOT_MODE, {}).get('memory', {}).get('core', {})
+        before = service.get(whole_label, {}).get(ROBOT_MODE, {}).get('memory', {}).get('core', {})
+        if core:
+            rows.append([f'core memory, {ten:,} individuals (PELLET, the robot\'s mode)',
+                         f'{core["peak_mib"]:,.0f} MiB',
+                         f'{whole_label}: {before["peak_mib"]:,.0f} MiB' if before else '-',
+                         f'<= {ISSUE15_MEMORY_TARGET_MIB} MiB',
+                         _met(core['peak_mib'] <= ISSUE15_MEMORY_TARGET_MIB)])
+    out = ['## 7. Reasoning at robot speed (issue 15)', '',
+           'A reference with a complete reasoner (HermiT, Openllet, JFact) brought up to date '
+           'after every change keeps every individual\'s types and, after an ABox change, reasons '
+           'only on the modules the change reaches: the parts of the ABox tied together by '
+           'properties the schema can propagate along (here an agent and its room; `connectedTo` '
+           'ties nothing). Modules alike share one reasoning. Answers equal a fresh reasoner on '
+           'the whole ontology (randomised equivalence test in `make test`). The reference rows '
+           'run the same workload through the reasoner named by its factory class '
+           f'(`{WHOLE_ONTOLOGY[whole_label]}`), which the service uses as it did before: on the '
+           'whole ontology, rebuilt after every removal.', '',
+           _table(['figure', 'this run', 'reference (same run)', 'target', 'met'], rows), '']
+    out += [f'### The cycle at {speed["large_individuals"]:,} individuals', '',
+            'Benchmark 3\'s cycle (non-buffered, no REASON), one node per reasoner.', '']
+    rows = []
+    for who, run in large.items():
+        figures = summarise(run)
+        rows.append([who, _seconds(run['load_s']), _seconds(run['first_s']), figures['cycles'],
+                     _ms(figures['cycle_p50_ms']), _ms(figures['cycle_max_ms']),
+                     {True: 'yes', False: '**no**', None: '-'}[figures['correct']],
+                     f'{run["memory"]["core"]["peak_mib"]:,.0f} MiB' if 'memory' in run else '-',
+                     run['note'] or 'finished'])
+    out += [_table(['reasoner', 'load', 'first', 'cycles', 'cycle p50', 'cycle max',
+                    'answers right', 'core peak', 'status'], rows), '']
+    out += [f'### Reads while the reference reasons ({speed["busy_individuals"]:,} '
+            'individuals)', '',
+            'A second client asks QUERY IND CLASS OccupiedRoom, first on the idle reference, then '
+            'over and over while the first client changes the schema (ADD / REMOVE CLASS CLASS '
+            'Vehicle Agent), after which every module is reasoned on again (the whole ontology, '
+            'for the reference). "busy" reads started while such a change was under way. A read '
+            'answered from the last reasoned state says so in `error_description` with the '
+            'revision it reflects.', '']
+    rows = []
+    for who, figures in busy.items():
+        rows.append([who, _ms(figures.get('idle_p50_ms')), figures.get('busy_reads', 0),
+                     _ms(figures.get('busy_p50_ms')), _ms(figures.get('busy_max_ms')),
+                     figures.get('marked', 0), _seconds(figures.get('write_p50_s')),
+                     {True: 'yes', False: '**no**', None: '-'}[figures.get('right')],
+                     figures.get('note') or 'finished'])
+    out += [_table(['reference', 'idle p50', 'busy reads', 'busy p50', 'busy max',
+                    'marked with a revision', 'schema change p50', 'answers right', 'status'],
+                   rows), '']
+    if 'directions' in speed:
+        out += _directions(speed['directions'], max(n for n in reasoning))
+    out += [f'### JVM options and memory ({max(n for n in reasoning):,} individuals)', '',
+            'The core\'s peak resident memory (VmHWM) with the ABox loaded and the robot\'s cycle '
+            'run (PELLET, non-buffered, no REASON), one node per option set (each with '
+            '`-XX:+ExitOnOutOfMemoryError`). Compact object headers need JDK 24 or later; the '
+            'project\'s Java is 17, so that row runs the same core on the JDK 25 installed '
+            'here.', '']
+    rows = []
+    for label, figures in speed['memory'].items():
+        peak = figures.get('core_peak_mib')
+        rows.append([f'`{label}`', f'{peak:,.0f} MiB' if peak else '-',
+                     _seconds(figures.get('load_s')), _ms(figures.get('cycle_p50_ms')),
+                     _ms(figures.get('cycle_max_ms')),
+                     {True: 'yes', False: '**no**', None: '-'}[figures.get('correct')],
+                     figures.get('note') or 'finished'])
+    out += [_table(['JVM options', 'core peak', 'load', 'cycle p50', 'cycle max', 'answers right',
+                    'status'], rows), '']
+    return out
 
 
 def render(results: dict) -> str:
@@ -237,8 +433,8 @@ def render(results: dict) -> str:
 
     out += ['## 4. Memory', '',
             'Peak resident memory (VmHWM) of the node (Python) and of its knowledge core (Java, '
-            '`-Xmx4g`) over the runs of benchmark 3, with the ABox loaded and reasoned in every '
-            'mode, one node per reasoner.', '']
+            'the node\'s default `jvm_options`) over the runs of benchmark 3, with the ABox '
+            'loaded and reasoned in every mode, one node per reasoner.', '']
     rows = []
     for individuals, sides in reasoning.items():
         for reasoner, modes in sides['service'].items():
@@ -265,6 +461,8 @@ def render(results: dict) -> str:
                 '']
     if 'lubm' in results:
         out += _lubm_section(results['lubm'])
+    if 'robot_speed' in results:
+        out += _robot_speed(results)
     return '\n'.join(out)
 
 

@@ -3,12 +3,12 @@
 
     python bench/suite.py [--scale full|smoke] [--report bench/REPORT.md]
 
-`make bench` runs it at full scale (about half an hour on 2 cores) and writes bench/REPORT.md.
-`--scale smoke` runs every benchmark on tiny sizes in about two minutes
-(tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set with the
-environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
-(query_latency.py, batch_throughput.py, reasoning_cycle.py, core_profile.py,
-lubm.py).
+`make bench` runs it at full scale (about 50 minutes on 2 cores) and writes bench/REPORT.md.
+`--scale smoke` runs every benchmark on tiny sizes in a few minutes
+(tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set
+with the environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
+(query_latency.py, batch_throughput.py, reasoning_cycle.py, robot_speed.py,
+core_profile.py, lubm.py).
 """
 
 import argparse
@@ -29,6 +29,7 @@ import lubm
 import query_latency
 import reasoning_cycle
 import report
+import robot_speed
 
 
 def _command_output(*command: str) -> str:
@@ -92,6 +93,22 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
     results['reasoning'] = reasoning_cycle.measure(
         scale.abox_sizes, scale.cycles, scale.cycle_budget_s, scale.owlready_budget_s, scratch,
         snapshot)
+    stage('6. reasoning at robot speed (issue 15)')
+    results['robot_speed'] = {
+        'large_individuals': scale.large_abox, 'busy_individuals': scale.busy_abox,
+        'large': robot_speed.measure_large(scratch, snapshot, scale.large_abox, scale.cycles,
+                                           scale.large_budget_s),
+        'busy': robot_speed.measure_busy_reads(scratch, snapshot, scale.busy_abox,
+                                               scale.busy_idle_calls, scale.busy_writes,
+                                               scale.busy_budget_s),
+        'memory': robot_speed.measure_memory(scratch, snapshot, max(scale.abox_sizes),
+                                             scale.cycles,
+                                             scale.cycle_budget_s[max(scale.abox_sizes)],
+                                             scale.jvm_variants),
+        'directions': robot_speed.measure_directions(
+            scratch, snapshot, max(scale.abox_sizes), scale.cycles,
+            scale.cycle_budget_s[max(scale.abox_sizes)]),
+    }
     stage('5. profiles')
     choice, _ = report.recommend(results['reasoning'])
     reasoner, mode = choice or ('HERMIT', 'non-buffered')

@@ -122,7 +122,9 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
               'longest wait for the core per request (0 = none)', read_only=False),
     Parameter('core_jar', 'string', '', "path of the core's jar (empty: $ARMOR_CORE_JAR)",
               default_text='`$ARMOR_CORE_JAR`'),
-    Parameter('jvm_options', 'string_array', ['-Xmx4g', '-XX:+ExitOnOutOfMemoryError'],
+    # The serial collector halves the core's peak memory against G1 (bench/REPORT.md, part 6).
+    Parameter('jvm_options', 'string_array',
+              ['-Xmx4g', '-XX:+UseSerialGC', '-XX:+ExitOnOutOfMemoryError'],
               'options of the core JVM, as a string array or one string split as a shell does; '
               'out of memory restarts the core', also_string=option_list),
     Parameter('executor_threads', 'integer', 16, 'directives answered at once'),

@@ -18,7 +18,7 @@ from conftest import release_domain, reserve_domain
 REPO = pathlib.Path(__file__).resolve().parents[2]
 SECTIONS = ('## Summary', '## Machine and versions', '## 1. Transport overhead',
             '## 2. Batch throughput', '## 3. Reasoning under updates', '## 4. Memory',
-            '## 5. Profile', '## 6. SPARQL on LUBM')
+            '## 5. Profile', '## 6. SPARQL on LUBM', '## 7. Reasoning at robot speed (issue 15)')
 FIGURE = re.compile(r'\|\s*[\d,]+(\.\d+)?\s*(ms|s|/s|MiB|%|x)?\s*\|')
 
 

@@ -14,6 +14,7 @@ import io.github.armor.core.command.CommandSuggestions;
 import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.command.DirectiveLog;
 import io.github.armor.core.command.Rendering;
+import io.github.armor.core.command.StateQueries;
 import io.github.armor.core.durability.StateStore;
 import io.github.armor.core.events.ChangeEvent;
 import io.github.armor.core.events.EventFeed;
@@ -27,6 +28,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import org.slf4j.Logger;
@@ -310,6 +312,13 @@ public final class ArmorCore implements AutoCloseable {
             case NEW -> create(spec, directive, list);
             case EXISTING -> {
                 Reference target = references.get(directive.referenceName());
+                // A question on a reference a writer holds is answered from its last reasoned state, not queued.
+                if (list == null && spec.kind() == CommandKind.QUERY && target.isBusy()) {
+                    Optional<Response> fromState = StateQueries.answer(directive, target, rendering);
+                    if (fromState.isPresent()) {
+                        yield fromState.get();
+                    }
+                }
                 CommandContext context = context(directive, target);
                 Response underLock = holdFor(list, target).locked(config.lockWaitMs(), reference -> {
                     releaseExpiredMount(reference);

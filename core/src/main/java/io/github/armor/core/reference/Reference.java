@@ -3,9 +3,12 @@ package io.github.armor.core.reference;
 
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.reasoning.ModularReasoner;
+import io.github.armor.core.reasoning.PublishedStates;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Function;
@@ -57,6 +60,8 @@ public final class Reference {
     private final ReasonerCoverage coverage;
 
     private final ReentrantLock lock = new ReentrantLock(true);
+    // The reasoner's kept types as readers that do not wait see them: offered when a writer lets go.
+    private final PublishedStates published = new PublishedStates();
 
     private final List<OWLOntologyChange> pending = new ArrayList<>();
     // Null after a time limit took it away: made afresh when next needed (see reasoner()).
@@ -106,6 +111,7 @@ public final class Reference {
                 timedReasoning(this::refreshConsistency);
                 return null;
             });
+            published.offer(reasoner, revision);
         } catch (RuntimeException e) {
             coverage.close();
             throw e;
@@ -146,12 +152,28 @@ public final class Reference {
     }
 
     public void release() {
+        if (lock.getHoldCount() == 1) {
+            published.offer(reasoner, revision);
+        }
         lock.unlock();
     }
 
     /** Whether other threads wait for this reference (a read-only view then lets them go first). */
     public boolean othersWaiting() {
         return lock.hasQueuedThreads();
+    }
+
+    /** Whether another thread holds this reference (a writer reasoning, or a directive under way). */
+    public boolean isBusy() {
+        return lock.isLocked() && !lock.isHeldByCurrentThread();
+    }
+
+    /**
+     * The last reasoned state a writer left, for a reader that must not wait while the reference
+     * is busy; empty when this reference's reasoner keeps none (buffered reasoner, ELK, whole-ontology reasoning).
+     */
+    public Optional<PublishedStates.Published> publishedState() {
+        return published.current();
     }
 
     public String name() {
@@ -397,11 +419,14 @@ public final class Reference {
     /**
      * Flushes the reasoner, or replaces it where incremental updates are known to go wrong:
      * Openllet and JFact keep inferences of removed axioms, and HermiT refuses assertions
-     * whose property was not in the ontology when it was created. ELK updates itself correctly.
+     * whose property was not in the ontology when it was created. ELK updates itself correctly,
+     * and so does the modular reasoner (it reasons on the modules a change touched afresh).
      */
     private void bringReasonerUpToDate() {
         modificationCount++;
-        if (removedSinceSync && !reasonerName.equals("ELK")) {
+        boolean handlesRemovals = reasonerName.equals("ELK")
+                || reasoner instanceof ModularReasoner modular && modular.handlesRemovals();
+        if (removedSinceSync && !handlesRemovals) {
             rebuildReasoner();
             return;
         }
@@ -492,8 +517,15 @@ public final class Reference {
      */
     private OWLReasoner createReasoner() {
         try {
-            return ReasonerCalls.run(null, ReasonerCalls.deadline(reasonerTimeoutMs),
-                    () -> ReasonerRegistry.factory(reasonerName).createReasoner(ontology, new SimpleConfiguration()));
+            return ReasonerCalls.run(null, ReasonerCalls.deadline(reasonerTimeoutMs), () -> {
+                SimpleConfiguration configuration = new SimpleConfiguration();
+                // A reasoner brought up to date after every change reasons only where a change reaches.
+                if (!bufferedReasoner && ModularReasoner.handles(reasonerName)) {
+                    return new ModularReasoner(reasonerName, ReasonerRegistry.factory(reasonerName), ontology,
+                            configuration);
+                }
+                return ReasonerRegistry.factory(reasonerName).createReasoner(ontology, configuration);
+            });
         } catch (ReasonerCalls.Overran e) {
             throw new ArmorException(ExitCode.TIMEOUT, reasonerName + " could not start on reference '" + name
                     + "' within the reasoner time limit of " + reasonerTimeoutMs + " ms", e);

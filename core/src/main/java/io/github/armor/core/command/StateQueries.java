@@ -1,0 +1,88 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.command;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.Directive;
+import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.api.Response;
+import io.github.armor.core.reasoning.InferredState;
+import io.github.armor.core.reasoning.PublishedStates.Published;
+import io.github.armor.core.reference.Reference;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import java.util.function.Predicate;
+import org.semanticweb.owlapi.model.EntityType;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLEntity;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+
+/**
+ * Questions about types answered while another directive holds the reference (a writer
+ * reasoning for seconds): from the state its reasoner last published, never from the live
+ * ontology, which the writer is changing. The answer is the one the locked path gave when that
+ * state was published; its description names the state's revision, so a client knows how old it
+ * is. Anything this cannot answer exactly (an unknown name, another command, no published state)
+ * is left to the ordinary path, which waits for the reference.
+ */
+public final class StateQueries {
+    private StateQueries() {}
+
+    /** The answer from the published state, or empty when the directive must wait for the reference. */
+    public static Optional<Response> answer(Directive directive, Reference reference, Rendering rendering) {
+        Optional<Published> published = reference.publishedState();
+        if (published.isEmpty()) {
+            return Optional.empty();
+        }
+        InferredState state = published.get().state();
+        Predicate<OWLEntity> known = entity -> entity instanceof OWLClass owlClass ? state.knows(owlClass)
+                : entity instanceof OWLNamedIndividual individual && state.knows(individual);
+        try {
+            Optional<List<String>> objects = switch (directive.key()) {
+                case "QUERY IND CLASS" -> named(reference, EntityType.CLASS, directive.args().get(0), known)
+                        .map(owlClass -> rendering.entities(state.consistent()
+                                ? state.instances(owlClass).stream() : inconsistent(reference)));
+                case "QUERY IND -" -> types(reference, state, directive.args().get(0), false, known, rendering);
+                case "QUERY CLASS IND" -> types(reference, state, directive.args().get(0), directive.args().size() > 1
+                        && directive.args().get(1).trim().equalsIgnoreCase("true"), known, rendering);
+                default -> Optional.empty();
+            };
+            return objects.map(list -> Response.ok(state.consistent(), list).withDescription(note(published.get(),
+                    reference)));
+        } catch (ArmorException e) {
+            if (e.exitCode() != ExitCode.INCONSISTENT) {
+                return Optional.empty();
+            }
+            return Optional.of(Response.failure(e, false).withDescription(e.getMessage() + "; "
+                    + note(published.get(), reference)));
+        }
+    }
+
+    private static Optional<List<String>> types(Reference reference, InferredState state, String argument,
+                                                boolean direct, Predicate<OWLEntity> known, Rendering rendering) {
+        return named(reference, EntityType.NAMED_INDIVIDUAL, argument, known).map(individual -> {
+            if (!state.consistent()) {
+                return rendering.entities(inconsistent(reference));
+            }
+            Set<OWLClass> classes = state.classesOf(individual, direct).orElseThrow();
+            return rendering.entities(classes.stream().filter(c -> !c.isOWLThing()));
+        });
+    }
+
+    /** The entity, when the state knows it; a name it does not know is the ordinary path's to describe. */
+    private static <E extends OWLEntity> Optional<E> named(Reference reference, EntityType<E> type, String argument,
+                                                           Predicate<OWLEntity> known) {
+        E entity = reference.names().entity(type, argument, known);
+        return entity.isBuiltIn() || known.test(entity) ? Optional.of(entity) : Optional.empty();
+    }
+
+    private static <T> T inconsistent(Reference reference) {
+        throw new ArmorException(ExitCode.INCONSISTENT, "reference '" + reference.name()
+                + "' is inconsistent; QUERY CONSISTENCY explains why");
+    }
+
+    private static String note(Published published, Reference reference) {
+        return "answered from reasoned state revision " + published.revision() + " while reference '"
+                + reference.name() + "' was busy";
+    }
+}

@@ -1,0 +1,648 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.reasoning;
+
+import io.github.armor.core.reasoning.AboxModules.Module;
+import io.github.armor.core.reasoning.AboxModules.Repartition;
+import io.github.armor.core.reasoning.ModuleRealiser.Realised;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import org.semanticweb.owlapi.model.AxiomType;
+import org.semanticweb.owlapi.model.OWLAxiom;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLClassExpression;
+import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLDataProperty;
+import org.semanticweb.owlapi.model.OWLDataPropertyExpression;
+import org.semanticweb.owlapi.model.OWLDeclarationAxiom;
+import org.semanticweb.owlapi.model.OWLIndividual;
+import org.semanticweb.owlapi.model.OWLLiteral;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.model.OWLObjectPropertyExpression;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.OWLOntologyChange;
+import org.semanticweb.owlapi.model.OWLOntologyChangeListener;
+import org.semanticweb.owlapi.model.parameters.Imports;
+import org.semanticweb.owlapi.reasoner.BufferingMode;
+import org.semanticweb.owlapi.reasoner.FreshEntityPolicy;
+import org.semanticweb.owlapi.reasoner.IndividualNodeSetPolicy;
+import org.semanticweb.owlapi.reasoner.InconsistentOntologyException;
+import org.semanticweb.owlapi.reasoner.InferenceType;
+import org.semanticweb.owlapi.reasoner.Node;
+import org.semanticweb.owlapi.reasoner.NodeSet;
+import org.semanticweb.owlapi.reasoner.OWLReasoner;
+import org.semanticweb.owlapi.reasoner.OWLReasonerConfiguration;
+import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
+import org.semanticweb.owlapi.reasoner.ReasonerInterruptedException;
+import org.semanticweb.owlapi.reasoner.TimeOutException;
+import org.semanticweb.owlapi.reasoner.impl.OWLNamedIndividualNode;
+import org.semanticweb.owlapi.reasoner.impl.OWLNamedIndividualNodeSet;
+import org.semanticweb.owlapi.util.Version;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * A complete OWL 2 DL reasoner (HermiT, Openllet or JFact underneath) that keeps the types of
+ * every individual up to date by reasoning, after an ABox change, only on the modules the change
+ * touched ({@link AboxModules}, {@link AboxLinks}), each in a fresh reasoner of the chosen kind.
+ * A robot that moves changes two small modules, whatever the size of the map.
+ *
+ * <p>Answers: consistency, {@link #getTypes} and {@link #getInstances} (not direct) of named classes come from
+ * the kept types ({@link InferredState}); they equal the underlying reasoner's on the whole
+ * ontology (the randomised equivalence test checks that, change sequence after change sequence).
+ * Every other question (direct instances too: reasoners disagree on their
+ * meaning for owl:Thing) goes to a reasoner of the same kind on the whole ontology, created on the
+ * first such question and brought up to date only when asked again after a change. Instances come
+ * one individual per node (ARMOR only ever reads their union).
+ *
+ * <p>When the ontology cannot be split ({@link AboxLinks#obstacle()}), or the underlying reasoner
+ * fails on a module, this reasoner is a plain wrapper of the whole-ontology reasoner and
+ * {@link #handlesRemovals()} says so; a schema change is followed by reasoning on every module
+ * again.
+ *
+ * <p>Buffering: changes are seen at {@link #flush()}, as with any buffering reasoner; it is made
+ * for a reference that flushes after every change (non-buffered reasoner), and a question asked
+ * with changes not flushed yet flushes them first. Thread use: one writer at a time, as any
+ * reasoner; {@link #state()} may be read from any thread.
+ */
+public final class ModularReasoner implements OWLReasoner {
+    private static final Logger LOG = LoggerFactory.getLogger(ModularReasoner.class);
+    private static final Set<String> UNDERLYING = Set.of("HERMIT", "PELLET", "OPENLLET", "JFACT");
+
+    private enum Mode { NOT_REASONED, MODULAR, WHOLE }
+
+    private final OWLOntology ontology;
+    private final OWLReasonerFactory factory;
+    private final OWLReasonerConfiguration configuration;
+    private final String underlyingName;
+    private final List<OWLOntologyChange> pending = new ArrayList<>();
+    private final OWLOntologyChangeListener listener = this::changed;
+
+    private Mode mode = Mode.NOT_REASONED;
+    private String wholeBecause = "";
+    private AboxLinks links;
+    private AboxModules modules;
+    private ModuleRealiser realiser;
+    private boolean schemaConsistent;
+    private volatile InferredState state;
+    private Set<OWLOntology> closure;
+
+    private OWLReasoner whole;
+    private boolean wholeBehind;
+    private boolean wholeMissedRemoval;
+
+    /** Whether ARMOR reasons on modules with this reasoner (a complete one, known by name). */
+    public static boolean handles(String reasonerName) {
+        return UNDERLYING.contains(reasonerName.toUpperCase(Locale.ROOT));
+    }
+
+    public ModularReasoner(String reasonerName, OWLReasonerFactory factory, OWLOntology ontology,
+                           OWLReasonerConfiguration configuration) {
+        this.underlyingName = reasonerName;
+        this.factory = factory;
+        this.ontology = ontology;
+        this.configuration = configuration;
+        this.closure = ontology.importsClosure().collect(Collectors.toSet());
+        ontology.getOWLOntologyManager().addOntologyChangeListener(listener);
+    }
+
+    /**
+     * Whether removals are handled here (modules): a reference then keeps this reasoner instead
+     * of replacing it after a removal, as it must for reasoners that keep removed inferences.
+     */
+    public boolean handlesRemovals() {
+        return mode != Mode.WHOLE;
+    }
+
+    /** How many modules took an earlier module's result since the last schema change (for tests). */
+    long reusedShapes() {
+        ModuleRealiser current = realiser;
+        return current == null ? 0 : current.reusedShapes();
+    }
+
+    /** Why the ontology is reasoned on as a whole, or empty when it is reasoned on in modules. */
+    public String wholeBecause() {
+        return wholeBecause;
+    }
+
+    /**
+     * The types as of the last flush, for readers on other threads; null until the first
+     * reasoning, and whenever the ontology is reasoned on as a whole.
+     */
+    public InferredState state() {
+        return state;
+    }
+
+    private void changed(List<? extends OWLOntologyChange> changes) {
+        for (OWLOntologyChange change : changes) {
+            if (closure.contains(change.getOntology())) {
+                pending.add(change);
+                wholeMissedRemoval |= change.isRemoveAxiom();
+            }
+        }
+    }
+
+    @Override
+    public void flush() {
+        List<OWLOntologyChange> changes = List.copyOf(pending);
+        pending.clear();
+        switch (mode) {
+            case WHOLE -> whole.flush();
+            case NOT_REASONED -> reasonOnModules();
+            case MODULAR -> {
+                wholeBehind = true;
+                guarded(() -> update(changes));
+            }
+        }
+    }
+
+    /** Every module reasoned on from the ontology as it is: at the first question, and after a schema change. */
+    private void reasonOnModules() {
+        pending.clear();
+        closure = ontology.importsClosure().collect(Collectors.toSet());
+        AboxLinks found = AboxLinks.of(linkShapingAxioms());
+        if (found.obstacle().isPresent()) {
+            reasonOnWhole(found.obstacle().get());
+            return;
+        }
+        mode = Mode.MODULAR;
+        wholeBehind = true;
+        guarded(() -> {
+            long start = System.nanoTime();
+            links = found;
+            realiser = new ModuleRealiser(factory, configuration, schemaAxioms());
+            modules = new AboxModules(ontology, links);
+            List<Module> all = modules.partitionAll();
+            schemaConsistent = realiser.schemaConsistent();
+            InferredState.Editor next = InferredState.empty().edit()
+                    .classes(ontology.classesInSignature(Imports.INCLUDED).collect(Collectors.toSet()));
+            record(all, schemaConsistent ? realiser.realise(all, modules::axiomsOf) : List.of(), next);
+            state = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+            LOG.debug("{} individuals in {} modules reasoned on with {} ({} took the result of a module alike)"
+                    + " in {} ms", state.individuals(), all.size(), underlyingName, realiser.reusedShapes(),
+                    (System.nanoTime() - start) / 1_000_000);
+        });
+    }
+
+    /** After ABox changes: the touched modules again; after a schema change: everything again. */
+    private void update(List<OWLOntologyChange> changes) {
+        Set<OWLIndividual> touched = new LinkedHashSet<>();
+        Set<OWLClass> classes = new HashSet<>();
+        boolean schemaChanged = false;
+        boolean linksMayChange = false;
+        for (OWLOntologyChange change : changes) {
+            if (change.isImportChange()) {
+                schemaChanged = true;
+            }
+            if (!change.isAxiomChange()) {
+                continue;
+            }
+            OWLAxiom axiom = change.getAxiom();
+            axiom.classesInSignature().forEach(classes::add);
+            if (axiom.isOfType(AxiomType.ABoxAxiomTypes)) {
+                AboxLinks.individualsOf(axiom).forEach(touched::add);
+                linksMayChange |= AboxLinks.shapesLinks(axiom);
+            } else if (axiom instanceof OWLDeclarationAxiom declaration) {
+                if (declaration.getEntity().isOWLNamedIndividual()) {
+                    touched.add(declaration.getEntity().asOWLNamedIndividual());
+                }
+            } else if (axiom.isLogicalAxiom()) {
+                schemaChanged = true;
+            }
+        }
+        if (schemaChanged || linksMayChange && !AboxLinks.of(linkShapingAxioms()).equals(links)) {
+            mode = Mode.NOT_REASONED;
+            reasonOnModules();
+            return;
+        }
+        if (touched.isEmpty() && classes.isEmpty()) {
+            return;
+        }
+        realiser.prepare();
+        Repartition repartition = modules.repartition(touched);
+        InferredState.Editor next = state.edit();
+        repartition.gone().stream().filter(OWLIndividual::isNamed)
+                .forEach(gone -> next.remove(gone.asOWLNamedIndividual()));
+        record(repartition.made(), schemaConsistent
+                ? realiser.realise(repartition.made(), modules::axiomsOf) : List.of(), next);
+        Set<OWLClass> signature = new HashSet<>(next.classes());
+        boolean signatureChanged = false;
+        for (OWLClass owlClass : classes) {
+            boolean present = ontology.containsEntityInSignature(owlClass, Imports.INCLUDED);
+            signatureChanged |= present ? signature.add(owlClass) : signature.remove(owlClass);
+        }
+        if (signatureChanged) {
+            next.classes(signature);
+        }
+        state = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+    }
+
+    /** The realised types into the next state; without realisation (inconsistent schema) types are unknown. */
+    private void record(List<Module> made, List<Realised> realised, InferredState.Editor next) {
+        if (realised.isEmpty()) {
+            made.forEach(module -> module.namedMembers().forEach(member -> next.put(member, null)));
+            return;
+        }
+        for (Realised outcome : realised) {
+            if (outcome.consistent()) {
+                outcome.types().forEach(next::put);
+            } else {
+                modules.markInconsistent(outcome.module());
+                outcome.module().namedMembers().forEach(member -> next.put(member, null));
+            }
+        }
+    }
+
+    /**
+     * Runs module reasoning; a failure of the underlying reasoner on a module (not a time limit
+     * or an interruption) sends this ontology to whole-ontology reasoning, where it fails, or
+     * not, exactly as before.
+     */
+    private void guarded(Runnable work) {
+        try {
+            work.run();
+        } catch (TimeOutException | ReasonerInterruptedException e) {
+            mode = Mode.NOT_REASONED;
+            throw e;
+        } catch (RuntimeException e) {
+            reasonOnWhole("a module failed: " + e);
+        }
+    }
+
+    private void reasonOnWhole(String because) {
+        LOG.debug("reasoning on the whole ontology with {}: {}", underlyingName, because);
+        mode = Mode.WHOLE;
+        wholeBecause = because;
+        links = null;
+        modules = null;
+        realiser = null;
+        state = null;
+        if (whole != null) {
+            whole.dispose();
+        }
+        whole = factory.createReasoner(ontology, configuration);
+        wholeBehind = false;
+        wholeMissedRemoval = false;
+    }
+
+    /** Schema axioms and ABox axioms that can make properties link (see {@link AboxLinks#shapesLinks}). */
+    private Stream<OWLAxiom> linkShapingAxioms() {
+        return Stream.concat(logicalSchemaAxioms(),
+                Stream.concat(ontology.axioms(AxiomType.CLASS_ASSERTION, Imports.INCLUDED),
+                        ontology.axioms(AxiomType.NEGATIVE_OBJECT_PROPERTY_ASSERTION, Imports.INCLUDED))
+                        .filter(AboxLinks::shapesLinks));
+    }
+
+    /** The logical axioms that are not assertions, through the index by kind (not every assertion). */
+    private Stream<OWLAxiom> logicalSchemaAxioms() {
+        return AxiomType.AXIOM_TYPES.stream()
+                .filter(type -> type.isLogical() && !AxiomType.ABoxAxiomTypes.contains(type))
+                .flatMap(type -> ontology.axioms(type, Imports.INCLUDED).map(OWLAxiom.class::cast));
+    }
+
+    /**
+     * What every module is reasoned with: the logical axioms that are not assertions, and a
+     * declaration of every class, property and datatype (so a module's signature is the whole
+     * ontology's, individuals apart).
+     */
+    private List<OWLAxiom> schemaAxioms() {
+        OWLDataFactory data = ontology.getOWLOntologyManager().getOWLDataFactory();
+        Stream<OWLAxiom> declarations = ontology.signature(Imports.INCLUDED)
+                .filter(entity -> !entity.isOWLNamedIndividual() && !entity.isBuiltIn())
+                .map(data::getOWLDeclarationAxiom);
+        return Stream.concat(logicalSchemaAxioms(), declarations).distinct().toList();
+    }
+
+    /** The kept types, brought up to date first (the first question reasons on every module). */
+    private InferredState current() {
+        if (mode == Mode.NOT_REASONED) {
+            reasonOnModules();
+        } else if (mode == Mode.MODULAR && !pending.isEmpty()) {
+            flush();
+        }
+        return mode == Mode.MODULAR ? state : null;
+    }
+
+    /** The reasoner on the whole ontology, up to date: made or refreshed on demand in modular mode. */
+    private OWLReasoner whole() {
+        current();
+        if (whole == null) {
+            whole = factory.createReasoner(ontology, configuration);
+            wholeBehind = false;
+            wholeMissedRemoval = false;
+        } else if (wholeBehind) {
+            // Openllet and JFact keep inferences of removed axioms; HermiT refuses some additions.
+            boolean rebuilt = wholeMissedRemoval;
+            if (!rebuilt) {
+                try {
+                    whole.flush();
+                } catch (TimeOutException | ReasonerInterruptedException | InconsistentOntologyException e) {
+                    throw e;
+                } catch (RuntimeException e) {
+                    rebuilt = true;
+                }
+            }
+            if (rebuilt) {
+                whole.dispose();
+                whole = factory.createReasoner(ontology, configuration);
+            }
+            wholeBehind = false;
+            wholeMissedRemoval = false;
+        }
+        return whole;
+    }
+
+    private InferredState consistentState() {
+        InferredState now = current();
+        if (now != null && !now.consistent()) {
+            throw new InconsistentOntologyException();
+        }
+        return now;
+    }
+
+    @Override
+    public boolean isConsistent() {
+        InferredState now = current();
+        return now != null ? now.consistent() : whole().isConsistent();
+    }
+
+    @Override
+    public NodeSet<OWLClass> getTypes(OWLNamedIndividual individual, boolean direct) {
+        InferredState now = consistentState();
+        if (now != null && now.knows(individual)) {
+            return now.types(individual).orElseThrow(InconsistentOntologyException::new).nodeSet(direct);
+        }
+        return whole().getTypes(individual, direct);
+    }
+
+    @Override
+    public NodeSet<OWLNamedIndividual> getInstances(OWLClassExpression expression, boolean direct) {
+        InferredState now = consistentState();
+        if (now == null || expression.isAnonymous() || direct) {
+            return whole().getInstances(expression, direct);
+        }
+        OWLNamedIndividualNodeSet instances = new OWLNamedIndividualNodeSet();
+        for (OWLNamedIndividual individual : now.instances(expression.asOWLClass())) {
+            instances.addNode(new OWLNamedIndividualNode(individual));
+        }
+        return instances;
+    }
+
+    @Override
+    public void interrupt() {
+        ModuleRealiser current = realiser;
+        if (current != null) {
+            current.interrupt();
+        }
+        OWLReasoner wholeNow = whole;
+        if (wholeNow != null) {
+            wholeNow.interrupt();
+        }
+    }
+
+    @Override
+    public void precomputeInferences(InferenceType... inferenceTypes) {
+        if (current() == null) {
+            whole().precomputeInferences(inferenceTypes);
+        }
+        // Class assertions are what the modules keep; anything else is computed when first asked.
+    }
+
+    @Override
+    public boolean isPrecomputed(InferenceType inferenceType) {
+        return mode == Mode.MODULAR ? inferenceType == InferenceType.CLASS_ASSERTIONS
+                : mode == Mode.WHOLE && whole.isPrecomputed(inferenceType);
+    }
+
+    @Override
+    public Set<InferenceType> getPrecomputableInferenceTypes() {
+        return mode == Mode.WHOLE ? whole.getPrecomputableInferenceTypes() : Set.of(InferenceType.CLASS_ASSERTIONS);
+    }
+
+    @Override
+    public void dispose() {
+        ontology.getOWLOntologyManager().removeOntologyChangeListener(listener);
+        if (whole != null) {
+            whole.dispose();
+        }
+        whole = null;
+        state = null;
+        modules = null;
+        realiser = null;
+    }
+
+    @Override
+    public String getReasonerName() {
+        return "ARMOR modules over " + underlyingName;
+    }
+
+    @Override
+    public Version getReasonerVersion() {
+        return new Version(1, 0, 0, 0);
+    }
+
+    @Override
+    public BufferingMode getBufferingMode() {
+        return BufferingMode.BUFFERING;
+    }
+
+    @Override
+    public List<OWLOntologyChange> getPendingChanges() {
+        return List.copyOf(pending);
+    }
+
+    @Override
+    public Set<OWLAxiom> getPendingAxiomAdditions() {
+        return pending.stream().filter(OWLOntologyChange::isAddAxiom).map(OWLOntologyChange::getAxiom)
+                .collect(Collectors.toSet());
+    }
+
+    @Override
+    public Set<OWLAxiom> getPendingAxiomRemovals() {
+        return pending.stream().filter(OWLOntologyChange::isRemoveAxiom).map(OWLOntologyChange::getAxiom)
+                .collect(Collectors.toSet());
+    }
+
+    @Override
+    public OWLOntology getRootOntology() {
+        return ontology;
+    }
+
+    @Override
+    public long getTimeOut() {
+        return configuration.getTimeOut();
+    }
+
+    @Override
+    public FreshEntityPolicy getFreshEntityPolicy() {
+        return configuration.getFreshEntityPolicy();
+    }
+
+    @Override
+    public IndividualNodeSetPolicy getIndividualNodeSetPolicy() {
+        return configuration.getIndividualNodeSetPolicy();
+    }
+
+    // Everything below is answered by the reasoner on the whole ontology.
+
+    @Override
+    public boolean isSatisfiable(OWLClassExpression classExpression) {
+        return whole().isSatisfiable(classExpression);
+    }
+
+    @Override
+    public Node<OWLClass> getUnsatisfiableClasses() {
+        return whole().getUnsatisfiableClasses();
+    }
+
+    @Override
+    public boolean isEntailed(OWLAxiom axiom) {
+        return whole().isEntailed(axiom);
+    }
+
+    @Override
+    public boolean isEntailed(Set<? extends OWLAxiom> axioms) {
+        return whole().isEntailed(axioms);
+    }
+
+    @Override
+    public boolean isEntailmentCheckingSupported(AxiomType<?> axiomType) {
+        return whole().isEntailmentCheckingSupported(axiomType);
+    }
+
+    @Override
+    public Node<OWLClass> getTopClassNode() {
+        return whole().getTopClassNode();
+    }
+
+    @Override
+    public Node<OWLClass> getBottomClassNode() {
+        return whole().getBottomClassNode();
+    }
+
+    @Override
+    public NodeSet<OWLClass> getSubClasses(OWLClassExpression ce, boolean direct) {
+        return whole().getSubClasses(ce, direct);
+    }
+
+    @Override
+    public NodeSet<OWLClass> getSuperClasses(OWLClassExpression ce, boolean direct) {
+        return whole().getSuperClasses(ce, direct);
+    }
+
+    @Override
+    public Node<OWLClass> getEquivalentClasses(OWLClassExpression ce) {
+        return whole().getEquivalentClasses(ce);
+    }
+
+    @Override
+    public NodeSet<OWLClass> getDisjointClasses(OWLClassExpression ce) {
+        return whole().getDisjointClasses(ce);
+    }
+
+    @Override
+    public Node<OWLObjectPropertyExpression> getTopObjectPropertyNode() {
+        return whole().getTopObjectPropertyNode();
+    }
+
+    @Override
+    public Node<OWLObjectPropertyExpression> getBottomObjectPropertyNode() {
+        return whole().getBottomObjectPropertyNode();
+    }
+
+    @Override
+    public NodeSet<OWLObjectPropertyExpression> getSubObjectProperties(OWLObjectPropertyExpression pe, boolean direct) {
+        return whole().getSubObjectProperties(pe, direct);
+    }
+
+    @Override
+    public NodeSet<OWLObjectPropertyExpression> getSuperObjectProperties(OWLObjectPropertyExpression pe,
+                                                                       boolean direct) {
+        return whole().getSuperObjectProperties(pe, direct);
+    }
+
+    @Override
+    public Node<OWLObjectPropertyExpression> getEquivalentObjectProperties(OWLObjectPropertyExpression pe) {
+        return whole().getEquivalentObjectProperties(pe);
+    }
+
+    @Override
+    public NodeSet<OWLObjectPropertyExpression> getDisjointObjectProperties(OWLObjectPropertyExpression pe) {
+        return whole().getDisjointObjectProperties(pe);
+    }
+
+    @Override
+    public Node<OWLObjectPropertyExpression> getInverseObjectProperties(OWLObjectPropertyExpression pe) {
+        return whole().getInverseObjectProperties(pe);
+    }
+
+    @Override
+    public NodeSet<OWLClass> getObjectPropertyDomains(OWLObjectPropertyExpression pe, boolean direct) {
+        return whole().getObjectPropertyDomains(pe, direct);
+    }
+
+    @Override
+    public NodeSet<OWLClass> getObjectPropertyRanges(OWLObjectPropertyExpression pe, boolean direct) {
+        return whole().getObjectPropertyRanges(pe, direct);
+    }
+
+    @Override
+    public Node<OWLDataProperty> getTopDataPropertyNode() {
+        return whole().getTopDataPropertyNode();
+    }
+
+    @Override
+    public Node<OWLDataProperty> getBottomDataPropertyNode() {
+        return whole().getBottomDataPropertyNode();
+    }
+
+    @Override
+    public NodeSet<OWLDataProperty> getSubDataProperties(OWLDataProperty pe, boolean direct) {
+        return whole().getSubDataProperties(pe, direct);
+    }
+
+    @Override
+    public NodeSet<OWLDataProperty> getSuperDataProperties(OWLDataProperty pe, boolean direct) {
+        return whole().getSuperDataProperties(pe, direct);
+    }
+
+    @Override
+    public Node<OWLDataProperty> getEquivalentDataProperties(OWLDataProperty pe) {
+        return whole().getEquivalentDataProperties(pe);
+    }
+
+    @Override
+    public NodeSet<OWLDataProperty> getDisjointDataProperties(OWLDataPropertyExpression pe) {
+        return whole().getDisjointDataProperties(pe);
+    }
+
+    @Override
+    public NodeSet<OWLClass> getDataPropertyDomains(OWLDataProperty pe, boolean direct) {
+        return whole().getDataPropertyDomains(pe, direct);
+    }
+
+    @Override
+    public NodeSet<OWLNamedIndividual> getObjectPropertyValues(OWLNamedIndividual ind, OWLObjectPropertyExpression pe) {
+        return whole().getObjectPropertyValues(ind, pe);
+    }
+
+    @Override
+    public Set<OWLLiteral> getDataPropertyValues(OWLNamedIndividual ind, OWLDataProperty pe) {
+        return whole().getDataPropertyValues(ind, pe);
+    }
+
+    @Override
+    public Node<OWLNamedIndividual> getSameIndividuals(OWLNamedIndividual ind) {
+        return whole().getSameIndividuals(ind);
+    }
+
+    @Override
+    public NodeSet<OWLNamedIndividual> getDifferentIndividuals(OWLNamedIndividual ind) {
+        return whole().getDifferentIndividuals(ind);
+    }
+}

@@ -1,0 +1,227 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.reasoning;
+
+import io.github.armor.core.reasoning.AboxModules.Module;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.IdentityHashMap;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.function.Function;
+import org.semanticweb.owlapi.apibinding.OWLManager;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLAxiom;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.OWLOntologyCreationException;
+import org.semanticweb.owlapi.model.OWLOntologyManager;
+import org.semanticweb.owlapi.reasoner.InferenceType;
+import org.semanticweb.owlapi.reasoner.NodeSet;
+import org.semanticweb.owlapi.reasoner.OWLReasoner;
+import org.semanticweb.owlapi.reasoner.OWLReasonerConfiguration;
+import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
+import org.semanticweb.owlapi.reasoner.ReasonerInterruptedException;
+import org.semanticweb.owlapi.reasoner.impl.OWLClassNodeSet;
+
+/**
+ * Reasons on modules: the schema plus the modules' assertions in a fresh reasoner of the
+ * reference's kind, which answers each member's types. Modules go together in batches (a
+ * reasoner per module would start too often); a batch that is inconsistent is halved until the
+ * inconsistent modules are found, since the others' types are still needed. A module shaped like
+ * one reasoned on before takes its result ({@link ModuleShapes}): a new robot asserted a Robot
+ * has the types every such robot has, a room with three robots those of every such room.
+ */
+final class ModuleRealiser {
+    /** Individuals per batch: large enough to start few reasoners, small enough to bound memory. */
+    static final int BATCH_INDIVIDUALS = 5000;
+
+    /** A module reasoned on: consistent with these types, or inconsistent (no types). */
+    record Realised(Module module, boolean consistent, Map<OWLNamedIndividual, TypeProfile> types) {}
+
+    private final OWLReasonerFactory factory;
+    private final OWLReasonerConfiguration configuration;
+    private final List<OWLAxiom> schema;
+    private final OWLOntologyManager scratch = OWLManager.createOWLOntologyManager();
+    private final TypeProfile.Interner profiles = new TypeProfile.Interner();
+    private final ModuleShapes shapes = new ModuleShapes(scratch);
+    private volatile OWLReasoner running;
+    private volatile boolean interrupted;
+
+    ModuleRealiser(OWLReasonerFactory factory, OWLReasonerConfiguration configuration, List<OWLAxiom> schema) {
+        this.factory = factory;
+        this.configuration = configuration;
+        this.schema = List.copyOf(schema);
+    }
+
+    /** Whether the schema alone is consistent (then so is an ontology without individuals). */
+    boolean schemaConsistent() {
+        return withReasoner(Set.of(), OWLReasoner::isConsistent);
+    }
+
+    /** Reasons on the modules; every module comes back once, consistent with types or inconsistent. */
+    List<Realised> realise(List<Module> modules, Function<Module, Set<OWLAxiom>> axiomsOf) {
+        List<Realised> done = new ArrayList<>();
+        Batch batch = new Batch();
+        // A module shaped like one waiting to be reasoned on takes that one's result afterwards.
+        Map<Set<OWLAxiom>, Module> firstOfShape = new HashMap<>();
+        Map<Module, List<Module>> followers = new IdentityHashMap<>();
+        Map<Module, ModuleShapes.Shape> shapeOf = new IdentityHashMap<>();
+        for (Module module : modules) {
+            Set<OWLAxiom> axioms = axiomsOf.apply(module);
+            ModuleShapes.Shape shape = shapes.shapeOf(module, axioms);
+            if (shape != null) {
+                Realised known = shapes.lookup(module, shape);
+                if (known != null) {
+                    done.add(known);
+                    continue;
+                }
+                shapeOf.put(module, shape);
+                Module first = firstOfShape.putIfAbsent(shape.key(), module);
+                if (first != null) {
+                    followers.computeIfAbsent(first, k -> new ArrayList<>()).add(module);
+                    continue;
+                }
+            }
+            batch.add(module, axioms, shape);
+            if (batch.individuals >= BATCH_INDIVIDUALS) {
+                reason(batch.modules, batch.axioms, batch.shapes, done);
+                batch = new Batch();
+            }
+        }
+        if (!batch.modules.isEmpty()) {
+            reason(batch.modules, batch.axioms, batch.shapes, done);
+        }
+        if (!followers.isEmpty()) {
+            Map<Module, Realised> byModule = new IdentityHashMap<>();
+            done.forEach(realised -> byModule.put(realised.module(), realised));
+            followers.forEach((first, others) -> others.forEach(other -> done.add(shapes.transfer(
+                    byModule.get(first), shapeOf.get(first), other, shapeOf.get(other)))));
+        }
+        return done;
+    }
+
+    /** Modules to reason on together, with their assertions and shapes (null: not compared). */
+    private static final class Batch {
+        final List<Module> modules = new ArrayList<>();
+        final List<Set<OWLAxiom>> axioms = new ArrayList<>();
+        final List<ModuleShapes.Shape> shapes = new ArrayList<>();
+        int individuals;
+
+        void add(Module module, Set<OWLAxiom> moduleAxioms, ModuleShapes.Shape shape) {
+            modules.add(module);
+            axioms.add(moduleAxioms);
+            shapes.add(shape);
+            individuals += module.members.size();
+        }
+    }
+
+    /** How many modules took the result of an earlier module of the same shape. */
+    long reusedShapes() {
+        return shapes.reused();
+    }
+
+    /** Forgets an interruption of an earlier update: call before each new one. */
+    void prepare() {
+        interrupted = false;
+    }
+
+    /** Stops the reasoning under way; the caller gets a {@link ReasonerInterruptedException}. */
+    void interrupt() {
+        interrupted = true;
+        OWLReasoner current = running;
+        if (current != null) {
+            current.interrupt();
+        }
+    }
+
+    private void reason(List<Module> batch, List<Set<OWLAxiom>> axioms, List<ModuleShapes.Shape> shapesOf,
+                        List<Realised> done) {
+        checkInterrupted();
+        Set<OWLAxiom> union = new LinkedHashSet<>();
+        axioms.forEach(union::addAll);
+        List<Realised> found = withReasoner(union, reasoner -> {
+            if (!reasoner.isConsistent()) {
+                return null;
+            }
+            if (reasoner.getPrecomputableInferenceTypes().contains(InferenceType.CLASS_ASSERTIONS)) {
+                reasoner.precomputeInferences(InferenceType.CLASS_ASSERTIONS);
+            }
+            // All types are the most specific ones and everything above them: asked once per kind of individual.
+            Map<NodeSet<OWLClass>, TypeProfile> byDirectTypes = new HashMap<>();
+            List<Realised> realised = new ArrayList<>();
+            for (Module module : batch) {
+                Map<OWLNamedIndividual, TypeProfile> types = new LinkedHashMap<>();
+                module.namedMembers().forEach(member -> types.put(member, byDirectTypes.computeIfAbsent(
+                        reasoner.getTypes(member, true), direct -> profiles.intern(
+                                TypeProfile.of(withSuperClasses(reasoner, direct), direct)))));
+                realised.add(new Realised(module, true, types));
+            }
+            return realised;
+        });
+        if (found != null) {
+            for (int i = 0; i < batch.size(); i++) {
+                remember(shapesOf.get(i), found.get(i));
+            }
+            done.addAll(found);
+        } else if (batch.size() == 1) {
+            Realised inconsistent = new Realised(batch.get(0), false, Map.of());
+            remember(shapesOf.get(0), inconsistent);
+            done.add(inconsistent);
+        } else {
+            int half = batch.size() / 2;
+            reason(batch.subList(0, half), axioms.subList(0, half), shapesOf.subList(0, half), done);
+            reason(batch.subList(half, batch.size()), axioms.subList(half, axioms.size()),
+                    shapesOf.subList(half, shapesOf.size()), done);
+        }
+    }
+
+    private static NodeSet<OWLClass> withSuperClasses(OWLReasoner reasoner, NodeSet<OWLClass> direct) {
+        OWLClassNodeSet all = new OWLClassNodeSet();
+        direct.forEach(node -> {
+            all.addNode(node);
+            // JFact answers an empty node for an individual whose only type is owl:Thing.
+            node.entities().findFirst().ifPresent(representative ->
+                    all.addAllNodes(reasoner.getSuperClasses(representative, false).nodes()));
+        });
+        return all;
+    }
+
+    private <T> T withReasoner(Set<OWLAxiom> abox, Function<OWLReasoner, T> question) {
+        OWLOntology ontology;
+        try {
+            ontology = scratch.createOntology();
+        } catch (OWLOntologyCreationException e) {
+            throw new IllegalStateException("could not create a scratch ontology", e);
+        }
+        OWLReasoner reasoner = null;
+        try {
+            scratch.addAxioms(ontology, schema.stream());
+            scratch.addAxioms(ontology, abox.stream());
+            reasoner = factory.createReasoner(ontology, configuration);
+            running = reasoner;
+            checkInterrupted();
+            return question.apply(reasoner);
+        } finally {
+            running = null;
+            if (reasoner != null) {
+                reasoner.dispose();
+            }
+            scratch.removeOntology(ontology);
+        }
+    }
+
+    private void checkInterrupted() {
+        if (interrupted || Thread.currentThread().isInterrupted()) {
+            throw new ReasonerInterruptedException("interrupted between modules");
+        }
+    }
+
+    private void remember(ModuleShapes.Shape shape, Realised realised) {
+        if (shape != null) {
+            shapes.remember(shape, realised);
+        }
+    }
+}
