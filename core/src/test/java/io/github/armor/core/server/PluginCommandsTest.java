@@ -286,7 +286,8 @@ class PluginCommandsTest {
         CompletableFuture<Response> holding = CompletableFuture.supplyAsync(
                 () -> run(core, "c", "map", "QUERY MARK SLEEPING", "600"));
         Thread.sleep(150);
-        Response waited = run(core, "c", "map", "QUERY IND CLASS", "Robot");
+        // A question the last reasoned state cannot answer (QUERY IND CLASS it could, without waiting).
+        Response waited = run(core, "c", "map", "QUERY OBJECTPROP IND", "isIn", "robot1");
         assertEquals(ExitCode.TIMEOUT.code(), waited.exitCode(), waited.errorDescription());
         assertTrue(waited.errorDescription().contains("stayed busy"), waited.errorDescription());
         assertEquals(List.of(iri("robot1")), ok(core, "c", "other", "QUERY IND CLASS", "Robot").queriedObjects());
