@@ -192,7 +192,8 @@ def test_a_looping_plugin_is_stopped_at_its_limit_and_holds_nothing_after(plugge
     def meanwhile():
         time.sleep(0.3)
         started = time.monotonic()
-        waited['same'] = send(armor, 'robotics', 'QUERY IND CLASS', 'Robot')
+        # A question the last reasoned state cannot answer: QUERY IND CLASS it would, at once.
+        waited['same'] = send(armor, 'robotics', 'QUERY OBJECTPROP IND', 'isIn', 'robot1')
         waited['same_s'] = time.monotonic() - started
         started = time.monotonic()
         waited['other'] = send(armor, 'tiny', 'QUERY IND CLASS', 'Robot')
