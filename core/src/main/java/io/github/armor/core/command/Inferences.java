@@ -104,20 +104,26 @@ public final class Inferences {
         return Stream.of(parts).flatMap(s -> s).collect(Collectors.toCollection(LinkedHashSet::new));
     }
 
+    /** The reference's axioms, its imports' included, in a new ontology of a manager of its own. */
+    static OWLOntology copyWithImports(Reference reference) {
+        OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
+        try {
+            OWLOntology copy = manager.createOntology(reference.ontology().getOntologyID());
+            manager.addAxioms(copy, reference.ontology().axioms(Imports.INCLUDED));
+            return copy;
+        } catch (OWLOntologyCreationException e) {
+            throw new ArmorException(ExitCode.INTERNAL_ERROR, "could not copy the ontology: " + e.getMessage(), e);
+        }
+    }
+
     /**
      * A copy of the ontology with the inferred class assertions, property assertions and class
      * hierarchy added; the live ontology is left as it was (SAVE INFERENCE).
      */
     static OWLOntology withInferences(Reference reference) {
         OWLReasoner reasoner = reference.reasonerForQuery();
-        OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
-        OWLOntology copy;
-        try {
-            copy = manager.createOntology(reference.ontology().getOntologyID());
-        } catch (OWLOntologyCreationException e) {
-            throw new ArmorException(ExitCode.INTERNAL_ERROR, "could not copy the ontology: " + e.getMessage(), e);
-        }
-        manager.addAxioms(copy, reference.ontology().axioms(Imports.INCLUDED));
+        OWLOntology copy = copyWithImports(reference);
+        OWLOntologyManager manager = copy.getOWLOntologyManager();
         OWLOntologyManager liveManager = reference.manager();
         if (liveManager.getOntologyFormat(reference.ontology()) != null) {
             manager.setOntologyFormat(copy, liveManager.getOntologyFormat(reference.ontology()));

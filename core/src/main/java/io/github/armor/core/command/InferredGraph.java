@@ -20,7 +20,6 @@ import org.apache.jena.graph.Node;
 import org.apache.jena.graph.NodeFactory;
 import org.apache.jena.graph.Triple;
 import org.apache.jena.sparql.graph.GraphFactory;
-import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.model.IRI;
 import org.semanticweb.owlapi.model.OWLAxiom;
 import org.semanticweb.owlapi.model.OWLClass;
@@ -30,7 +29,6 @@ import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLObjectPropertyAssertionAxiom;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
-import org.semanticweb.owlapi.model.OWLOntologyCreationException;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.parameters.Imports;
 import org.semanticweb.owlapi.reasoner.OWLReasoner;
@@ -330,14 +328,8 @@ final class InferredGraph {
      * characteristics added, as SAVE INFERENCE adds them.
      */
     private static OWLOntology withInferredSchema(Reference reference) {
-        OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
-        OWLOntology copy;
-        try {
-            copy = manager.createOntology(reference.ontology().getOntologyID());
-        } catch (OWLOntologyCreationException e) {
-            throw new ArmorException(ExitCode.INTERNAL_ERROR, "could not copy the ontology: " + e.getMessage(), e);
-        }
-        manager.addAxioms(copy, reference.ontology().axioms(Imports.INCLUDED));
+        OWLOntology copy = Inferences.copyWithImports(reference);
+        OWLOntologyManager manager = copy.getOWLOntologyManager();
         OWLReasoner reasoner = reference.reasonerForQuery();
         for (InferredAxiomGenerator<? extends OWLAxiom> generator : List.of(new InferredSubClassAxiomGenerator(),
                 new InferredEquivalentClassAxiomGenerator(), new InferredDataPropertyCharacteristicAxiomGenerator())) {
