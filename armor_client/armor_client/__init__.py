@@ -25,6 +25,7 @@ _EXPORTS = {
     'Batch': 'armor_client.batch',
     'Characteristic': 'armor_client.operations', 'Consistency': 'armor_client.operations',
     'Reasoner': 'armor_client.operations', 'SparqlRows': 'armor_client.operations',
+    'AcknowledgedChange': 'armor_client.operations', 'ChangeHistory': 'armor_client.operations',
     'Armor': 'armor_client.reference', 'Reference': 'armor_client.reference',
     'ArmorTransport': 'armor_client.transport', 'directive': 'armor_client.transport',
     **{name: 'armor_client.subscriptions' for name in (

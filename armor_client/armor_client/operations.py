@@ -63,6 +63,61 @@ class Consistency:
         return self.consistent
 
 
+@dataclass(frozen=True)
+class AcknowledgedChange:
+    """One acknowledged change of a reference, as GET REF CHANGES answers it.
+
+    Attributes:
+        revision: the reference's revision after it.
+        directives: its directives (one, or an atomic list's), each a dict keyed by the
+            armor_msgs field names: client_name, command, primary_command_spec,
+            secondary_command_spec, args (and reference_name).
+    """
+
+    revision: int
+    directives: List[Dict[str, Any]]
+
+    def includes(self, command: str, args: Sequence[Any],
+                 client_name: Optional[str] = None) -> bool:
+        """Whether it holds this directive (command words and arguments as they were sent).
+
+        Example: ``change.includes('ADD IND CLASS', ['box1', 'Box'], 'planner')``.
+        """
+        wanted = _command_words(command)
+        sent = [str(arg) for arg in args]
+        return any(_command_words(' '.join((d['command'], d['primary_command_spec'],
+                                            d['secondary_command_spec']))) == wanted
+                   and list(d['args']) == sent
+                   and (client_name is None or d['client_name'] == client_name)
+                   for d in self.directives)
+
+
+class ChangeHistory(list):
+    """GET REF CHANGES: the AcknowledgedChange objects after a revision, oldest first.
+
+    Attributes:
+        complete: False when some changes after that revision are no longer kept (the node
+            keeps a reference's latest 1,000 changes); ``note`` then says from where it starts.
+    """
+
+    def __init__(self, changes: Sequence[AcknowledgedChange], note: str):
+        super().__init__(changes)
+        self.note = note
+        self.complete = not note
+
+
+def _command_words(command: str) -> Tuple[str, ...]:
+    return tuple(w.upper() for w in command.split() if w not in ('', '-'))
+
+
+def _change_history(response: Any) -> ChangeHistory:
+    changes = []
+    for text in response.queried_objects:
+        record = json.loads(text)
+        changes.append(AcknowledgedChange(int(record['revision']), list(record['directives'])))
+    return ChangeHistory(changes, response.error_description)
+
+
 class SparqlRows(list):
     """SPARQL answer rows (a list); ``timed_out`` says the time limit cut the answer short."""
 
@@ -1135,6 +1190,40 @@ class SessionCommands:
                              lambda response: (response.queried_objects[0]
                                                if response.queried_objects else None))
 
+    def revision(self, reference: str) -> int:
+        """A reference's revision: how many changes it has acknowledged (GET REF REVISION).
+
+        Read it before a change whose answer might be lost; see changes_since.
+        """
+        return self._session('', ('GET', 'REF', 'REVISION'), [reference],
+                             lambda response: int(response.queried_objects[0]))
+
+    def changes_since(self, reference: str, revision: int = -1) -> ChangeHistory:
+        """A reference's acknowledged changes after a revision, oldest first (GET REF CHANGES).
+
+        How a client whose answer never arrived (ArmorCoreUnavailableError, a time-out, a lost
+        reply) learns whether its change was applied before sending it again::
+
+            before = armor.revision('map')
+            try:
+                armor.reference('map').add_object_value('isIn', 'bob', 'kitchen')
+            except (ArmorCoreUnavailableError, ArmorServiceCallError):
+                if not any(change.includes('ADD OBJECTPROP IND', ['isIn', 'bob', 'kitchen'],
+                                           armor.client_name)
+                           for change in armor.changes_since('map', before)):
+                    ...  # not applied: send it again
+
+        Args:
+            reference: the reference name.
+            revision: the revision after which to list changes (-1: every kept change).
+
+        Returns:
+            A ChangeHistory (a list of AcknowledgedChange); ``complete`` is False when older
+            changes after ``revision`` are no longer kept.
+        """
+        return self._session('', ('GET', 'REF', 'CHANGES'), [reference, str(revision)],
+                             _change_history)
+
     def log_to_screen(self, on: bool) -> None:
         """Turn the node's logging of directives to its screen on or off (LOG SCREEN ON/OFF).
 
@@ -1183,6 +1272,21 @@ class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge):
             Its name, or None (an awaitable of it from AsyncReference).
         """
         return self.armor.mounted_by(self.name)
+
+    def revision(self) -> Any:
+        """How many changes this reference has acknowledged (GET REF REVISION).
+
+        See Armor.changes_since for what it is for.
+        """
+        return self.armor.revision(self.name)
+
+    def changes_since(self, revision: int = -1) -> Any:
+        """This reference's acknowledged changes after a revision (GET REF CHANGES).
+
+        Returns:
+            A ChangeHistory (an awaitable of it from AsyncReference); see Armor.changes_since.
+        """
+        return self.armor.changes_since(self.name, revision)
 
     def _execute(self, words: Words, args: Sequence[Any], parse: Parser) -> Any:
         return self.armor._then(self.armor.call(self.name, *words, args),

@@ -179,6 +179,19 @@ std::optional<std::string> Armor::mounted_by(const std::string & reference) cons
   return holders.front();
 }
 
+std::uint64_t Armor::revision(const std::string & reference) const
+{
+  auto answer = execute("", contract::GET_REF_REVISION, {reference}).queried_objects;
+  return answer.empty() ? 0 : std::stoull(answer.front());
+}
+
+std::vector<std::string> Armor::changes_since(
+  const std::string & reference, std::int64_t revision) const
+{
+  return execute("", contract::GET_REF_CHANGES, {reference, std::to_string(revision)})
+         .queried_objects;
+}
+
 void Armor::log_to_screen(bool on) const
 {
   execute("", on ? contract::LOG_SCREEN_ON : contract::LOG_SCREEN_OFF, {});
@@ -424,6 +437,13 @@ void Reference::mount() const {answer(contract::MOUNT, {});}
 void Reference::unmount() const {answer(contract::UNMOUNT, {});}
 
 std::optional<std::string> Reference::mounted_by() const {return armor_.mounted_by(name());}
+
+std::uint64_t Reference::revision() const {return armor_.revision(name());}
+
+std::vector<std::string> Reference::changes_since(std::int64_t revision) const
+{
+  return armor_.changes_since(name(), revision);
+}
 
 Mount Reference::mounted() const {return Mount(*this);}
 

@@ -157,6 +157,22 @@ TEST_F(LiveReference, TheMountGuardKeepsOtherClientsOutUntilItEnds)
   EXPECT_THROW(ref_->unmount(), armor::MountError);
 }
 
+TEST_F(LiveReference, TheChangeHistoryTellsWhetherAChangeWasApplied)
+{
+  std::uint64_t before = ref_->revision();
+  ref_->add_individual_to_class("dave", "Person");
+  EXPECT_EQ(ref_->revision(), before + 1);
+  auto changes = ref_->changes_since(static_cast<std::int64_t>(before));
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_NE(changes.front().find("\"revision\":" + std::to_string(before + 1)), std::string::npos)
+    << changes.front();
+  EXPECT_NE(changes.front().find("\"args\":[\"dave\",\"Person\"]"), std::string::npos)
+    << changes.front();
+  EXPECT_NE(changes.front().find("\"client_name\":\"cpp_test\""), std::string::npos)
+    << changes.front();
+  EXPECT_TRUE(ref_->changes_since(static_cast<std::int64_t>(before + 1)).empty());
+}
+
 TEST_F(LiveReference, ABatchChangesAllOrNothing)
 {
   armor::Reference & ref = *ref_;

@@ -132,6 +132,8 @@ void every_other_method(const armor::Armor & armor, armor::Reference & ref)
   armor.load_progress();
   armor.catalogue();
   armor.mounted_by("r");
+  armor.revision("r");
+  armor.changes_since("r", 3);
   armor.log_to_screen(true);
   armor.log_to_screen(false);
   armor.log_to_file(std::string("/tmp/armor.log"));
@@ -163,6 +165,8 @@ void every_other_method(const armor::Armor & armor, armor::Reference & ref)
   ref.mount();
   ref.unmount();
   ref.mounted_by();
+  ref.revision();
+  ref.changes_since();
 }
 
 std::string name_of(const Words & words)

@@ -6,7 +6,7 @@ import signal
 import threading
 import time
 
-from armor_client import ArmorTransport, directive
+from armor_client import Armor, ArmorCoreUnavailableError, ArmorTransport, directive, Reasoner
 from conftest import iris, start_node
 from ontology_factory import write_abox
 import pytest
@@ -71,3 +71,49 @@ def test_core_killed_while_idle_is_replaced(supervised):
             break
         time.sleep(0.2)
     assert answer.success and 'robotics' in answer.queried_objects
+
+
+def test_a_client_that_got_216_learns_from_the_change_history_what_to_send_again(supervised):
+    """Issue 20 items 6 and 9: 216 does not mean "not applied"; GET REF CHANGES tells which."""
+    node, transport = supervised
+    armor = Armor('retrying', transport=transport, timeout_s=120)
+    ref = armor.create('retried', 'http://example.org/retried', reasoner=Reasoner.PELLET)
+    before = ref.revision()
+    names = [f'marker{i}' for i in range(400)]
+    unanswered = []
+
+    def send_all():
+        for name in names:
+            try:
+                ref.add_individual_to_class(name, 'Marker')
+            except ArmorCoreUnavailableError:
+                unanswered.append(name)
+
+    sender = threading.Thread(target=send_all)
+    sender.start()
+    time.sleep(0.5)
+    os.kill(node.core_pid(), signal.SIGKILL)
+    sender.join(timeout=300)
+    assert unanswered, 'the kill came too late: no directive was answered 216'
+
+    deadline = time.monotonic() + 120
+    while True:
+        try:
+            history = ref.changes_since(before)
+            break
+        except ArmorCoreUnavailableError:
+            assert time.monotonic() < deadline, 'the core did not come back'
+            time.sleep(0.2)
+    assert history.complete, history.note
+    applied = {name for name in unanswered
+               if any(c.includes('ADD IND CLASS', [name, 'Marker'], 'retrying') for c in history)}
+    for name in unanswered:
+        if name not in applied:
+            ref.add_individual_to_class(name, 'Marker')
+
+    assert sorted(ref.instances('Marker')) == sorted(names)
+    history = ref.changes_since(before)
+    added = [d['args'][0] for change in history for d in change.directives]
+    assert sorted(added) == sorted(names), 'a directive was applied twice or never'
+    assert ref.revision() == before + len(names)
+    ref.drop()

@@ -16,6 +16,7 @@
 #define ARMOR_CPP__ARMOR_HPP_
 
 #include <chrono>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -138,6 +139,12 @@ public:
   std::string catalogue() const;
   // The client that holds a reference's mount, or empty (GET REF CLIENT).
   std::optional<std::string> mounted_by(const std::string & reference) const;
+  // How many changes a reference has acknowledged (GET REF REVISION).
+  std::uint64_t revision(const std::string & reference) const;
+  // A reference's acknowledged changes after a revision, oldest first, one JSON object each:
+  // {"revision": N, "directives": [{"client_name", "command", ..., "args"}]} (GET REF CHANGES).
+  // How a client whose answer was lost learns whether its change was applied; -1: all kept.
+  std::vector<std::string> changes_since(const std::string & reference, std::int64_t revision = -1) const;
   // Turn the node's logging of directives to its screen on or off (LOG SCREEN ON/OFF).
   void log_to_screen(bool on) const;
   // Log directives to a file on the node's machine; empty stops it (LOG FILE ON/OFF).
@@ -257,6 +264,10 @@ public:
   void unmount() const;
   // The client that holds this reference's mount, or empty (GET REF CLIENT).
   std::optional<std::string> mounted_by() const;
+  // How many changes this reference has acknowledged (GET REF REVISION).
+  std::uint64_t revision() const;
+  // Its acknowledged changes after a revision (GET REF CHANGES); see Armor::changes_since.
+  std::vector<std::string> changes_since(std::int64_t revision = -1) const;
   // Hold the mount until the returned guard is destroyed.
   Mount mounted() const;
   // A builder for changes sent together as one atomic list.

@@ -64,6 +64,10 @@ inline constexpr Command GET_LOAD_PROGRESS{"GET", "LOAD", "PROGRESS", Kind::Glob
 inline constexpr Command GET_CATALOGUE{"GET", "CATALOGUE", "", Kind::Global, 0, 0, false, false};
 // the client that holds the mount, if any
 inline constexpr Command GET_REF_CLIENT{"GET", "REF", "CLIENT", Kind::Global, 0, 1, false, false};
+// the revision: how many changes it has acknowledged
+inline constexpr Command GET_REF_REVISION{"GET", "REF", "REVISION", Kind::Global, 0, 1, false, false};
+// its latest acknowledged changes after a revision, one JSON object each
+inline constexpr Command GET_REF_CHANGES{"GET", "REF", "CHANGES", Kind::Global, 0, 2, false, false};
 // log directives on the node's screen
 inline constexpr Command LOG_SCREEN_ON{"LOG", "SCREEN", "ON", Kind::Global, 0, 0, false, false};
 // stop logging to the screen
@@ -218,7 +222,7 @@ inline constexpr Command QUERY_SPARQL_FORMATTED{"QUERY", "SPARQL", "FORMATTED", 
 inline constexpr Command QUERY_CONSISTENCY{"QUERY", "CONSISTENCY", "", Kind::Query, 0, 0, false, false};
 
 // Every command the core answers, in the catalogue's order.
-inline constexpr std::array<const Command *, 90> kCommands{
+inline constexpr std::array<const Command *, 92> kCommands{
   &LOAD_FILE,
   &LOAD_WEB,
   &LOAD_FILE_MOUNTED,
@@ -233,6 +237,8 @@ inline constexpr std::array<const Command *, 90> kCommands{
   &GET_LOAD_PROGRESS,
   &GET_CATALOGUE,
   &GET_REF_CLIENT,
+  &GET_REF_REVISION,
+  &GET_REF_CHANGES,
   &LOG_SCREEN_ON,
   &LOG_SCREEN_OFF,
   &LOG_FILE_ON,

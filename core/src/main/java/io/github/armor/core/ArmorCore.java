@@ -1,6 +1,7 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core;
 
+import io.github.armor.core.api.AcknowledgedChange;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
@@ -89,6 +90,7 @@ public final class ArmorCore implements AutoCloseable {
                 references.register(reference);
                 restorable.records().forEach(this::replay);
                 reference.setRevision(restorable.revision());
+                reference.changeHistory().addAll(restorable.history());
                 reference.synchroniseReasoner();
                 state.adopt(restorable);
                 LOG.info("restored reference '{}' from the state directory {}: {} axioms, {} individuals,"
@@ -102,7 +104,7 @@ public final class ArmorCore implements AutoCloseable {
         }
     }
 
-    private void replay(StateStore.JournaledChange record) {
+    private void replay(AcknowledgedChange record) {
         replaying.set(true);
         try {
             for (Directive directive : record.directives()) {
@@ -369,6 +371,7 @@ public final class ArmorCore implements AutoCloseable {
                     state.record(reference, revision, List.of(directive));
                 }
                 reference.setRevision(revision);
+                reference.changeHistory().add(new AcknowledgedChange(revision, List.of(directive)));
                 if (state != null) {
                     state.checkpointIfDue(reference);
                 }
@@ -499,8 +502,9 @@ public final class ArmorCore implements AutoCloseable {
                     ArmorCore.this.state.record(reference, reference.revision() + 1, directives);
                 }
             });
-            toJournal.keySet().forEach(reference -> {
+            toJournal.forEach((reference, directives) -> {
                 reference.setRevision(reference.revision() + 1);
+                reference.changeHistory().add(new AcknowledgedChange(reference.revision(), directives));
                 if (ArmorCore.this.state != null) {
                     ArmorCore.this.state.checkpointIfDue(reference);
                 }

@@ -1,9 +1,11 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.command;
 
+import io.github.armor.core.api.AcknowledgedChange;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
+import io.github.armor.core.reference.ChangeHistory;
 import io.github.armor.core.reference.LoadProgress;
 import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.ReasonerRegistry;
@@ -57,10 +59,15 @@ public final class ReferenceCommands implements CommandGroup {
                 .global(c -> Response.ok(true, List.of(Catalogue.json(c.commands()).toString())));
         table.command("GET REF CLIENT").optional("reference name").emptySurplusIgnored()
                 .summary("the client that holds the mount, if any").global(c -> {
-            String name = c.hasArg(0) ? c.arg(0) : c.directive().referenceName();
-            String holder = c.references().get(name).mountedBy();
+            String holder = named(c).mountedBy();
             return Response.ok(true, holder.isEmpty() ? List.of() : List.of(holder));
         });
+        table.command("GET REF REVISION").optional("reference name")
+                .summary("the revision: how many changes it has acknowledged").global(c -> Response.ok(true,
+                        List.of(Long.toString(named(c).revision()))));
+        table.command("GET REF CHANGES").optional("reference name", "since revision")
+                .summary("its latest acknowledged changes after a revision, one JSON object each")
+                .global(ReferenceCommands::changes);
         for (String state : List.of("ON", "OFF")) {
             boolean on = state.equals("ON");
             table.command("LOG SCREEN " + state).emptySurplusIgnored()
@@ -92,6 +99,38 @@ public final class ReferenceCommands implements CommandGroup {
             }
             return c.ok();
         });
+    }
+
+    /** The reference a utility names in its first argument, or the directive's. */
+    private static Reference named(CommandContext c) {
+        return c.references().get(c.hasArg(0) ? c.arg(0) : c.directive().referenceName());
+    }
+
+    /**
+     * What lets a client whose answer was lost (216, 211 from the node, a lost reply) learn
+     * whether its change was applied before it sends it again: the kept changes after a
+     * revision, oldest first; the description says when older ones are no longer kept.
+     */
+    private static Response changes(CommandContext c) {
+        Reference reference = named(c);
+        long since = -1;
+        if (c.hasArg(1)) {
+            try {
+                since = Long.parseLong(c.arg(1).trim());
+            } catch (NumberFormatException e) {
+                throw new ArmorException(ExitCode.BAD_DATA_TYPE, "GET REF CHANGES: the revision must be a whole"
+                        + " number, got '" + c.arg(1) + "'");
+            }
+        }
+        ChangeHistory history = reference.changeHistory();
+        List<AcknowledgedChange> after = history.since(since);
+        // Revision 0 is the reference as made: its first change is revision 1.
+        long wanted = Math.max(since + 1, 1);
+        long keptFrom = history.oldestRevision() < 0 ? reference.revision() + 1 : history.oldestRevision();
+        String description = keptFrom <= wanted ? "" : "changes from revision " + wanted + " to " + (keptFrom - 1)
+                + " are no longer kept; the answer starts at revision " + keptFrom;
+        return Response.ok(true, after.stream().map(change -> change.toJson().toString()).toList())
+                .withDescription(description);
     }
 
     private static OntologyFiles files(CommandContext c) {

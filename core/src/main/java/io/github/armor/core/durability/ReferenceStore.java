@@ -5,6 +5,7 @@ import com.google.gson.JsonArray;
 import com.google.gson.JsonElement;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
+import io.github.armor.core.api.AcknowledgedChange;
 import io.github.armor.core.api.CoreConfig.Durability;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.DirectiveJson;
@@ -60,6 +61,9 @@ final class ReferenceStore {
     private String formatClass;
     private long checkpointSeq;
     private long checkpointRevision;
+    // The change history as it was at the checkpoint: the journals it replaces are deleted, and
+    // GET REF CHANGES must still answer for those changes after a restart.
+    private List<AcknowledgedChange> historyInCheckpoint = new ArrayList<>();
     private final List<Long> journalSeqs = new ArrayList<>();
     private Journal journal;
     private int recordsSinceCheckpoint;
@@ -74,8 +78,8 @@ final class ReferenceStore {
 
     /** What recovery needs: the checkpoint to load and the records to replay on top. */
     record Recovered(ReferenceStore store, String name, Reference.Settings settings, String mountedBy,
-                     String formatClass, Path checkpoint, List<StateStore.JournaledChange> records, long revision,
-                     int tornTails) {}
+                     String formatClass, Path checkpoint, List<AcknowledgedChange> records, long revision,
+                     int tornTails, List<AcknowledgedChange> history) {}
 
     /** Files for a new reference: its first checkpoint is the ontology as loaded. */
     static ReferenceStore create(Path dir, Reference reference, Durability durability) throws IOException {
@@ -103,7 +107,12 @@ final class ReferenceStore {
         store.formatClass = meta.get("format").getAsString();
         store.checkpointSeq = meta.get("checkpoint").getAsLong();
         store.checkpointRevision = meta.has("checkpoint_revision") ? meta.get("checkpoint_revision").getAsLong() : 0;
-        List<StateStore.JournaledChange> records = new ArrayList<>();
+        if (meta.has("recent_changes")) {
+            for (JsonElement change : meta.getAsJsonArray("recent_changes")) {
+                store.historyInCheckpoint.add(AcknowledgedChange.fromJson(change, 0));
+            }
+        }
+        List<AcknowledgedChange> records = new ArrayList<>();
         long revision = store.checkpointRevision;
         int torn = 0;
         for (JsonElement seq : meta.getAsJsonArray("journals")) {
@@ -116,7 +125,8 @@ final class ReferenceStore {
                 Journal.truncate(file, contents.validBytes());
             }
             for (byte[] record : contents.records()) {
-                StateStore.JournaledChange change = parseRecord(record, revision + 1);
+                AcknowledgedChange change = AcknowledgedChange.fromJson(
+                        JsonParser.parseString(new String(record, StandardCharsets.UTF_8)), revision + 1);
                 revision = change.revision();
                 records.add(change);
             }
@@ -126,25 +136,15 @@ final class ReferenceStore {
         store.journal = Journal.openForAppend(store.journalFile(last), durability.fsync());
         store.recordsSinceCheckpoint = records.size();
         return new Recovered(store, store.name, store.settings, meta.get("mounted_by").getAsString(),
-                store.formatClass, store.checkpointFile(store.checkpointSeq), records, revision, torn);
+                store.formatClass, store.checkpointFile(store.checkpointSeq), records, revision, torn,
+                historyOf(store.historyInCheckpoint, records));
     }
 
-    /** One record: {@code {"revision", "directives"}}, or a bare array of directives written before revisions. */
-    private static StateStore.JournaledChange parseRecord(byte[] record, long revisionIfUnnamed) {
-        JsonElement json = JsonParser.parseString(new String(record, StandardCharsets.UTF_8));
-        long revision = revisionIfUnnamed;
-        JsonArray array;
-        if (json.isJsonObject()) {
-            revision = json.getAsJsonObject().get("revision").getAsLong();
-            array = json.getAsJsonObject().getAsJsonArray("directives");
-        } else {
-            array = json.getAsJsonArray();
-        }
-        List<Directive> directives = new ArrayList<>();
-        for (JsonElement d : array) {
-            directives.add(DirectiveJson.fromJson(d.getAsJsonObject()));
-        }
-        return new StateStore.JournaledChange(revision, directives);
+    private static List<AcknowledgedChange> historyOf(List<AcknowledgedChange> inCheckpoint,
+                                                      List<AcknowledgedChange> journaled) {
+        List<AcknowledgedChange> history = new ArrayList<>(inCheckpoint);
+        history.addAll(journaled);
+        return history;
     }
 
     /**
@@ -152,11 +152,7 @@ final class ReferenceStore {
      * and the reference's revision once they are applied.
      */
     synchronized void record(long revision, List<Directive> directives) throws IOException {
-        JsonArray array = new JsonArray();
-        directives.forEach(d -> array.add(DirectiveJson.toJson(d)));
-        JsonObject record = new JsonObject();
-        record.addProperty("revision", revision);
-        record.add("directives", array);
+        JsonObject record = new AcknowledgedChange(revision, directives).toJson();
         journal.append(record.toString().getBytes(StandardCharsets.UTF_8));
         recordsSinceCheckpoint++;
     }
@@ -179,6 +175,7 @@ final class ReferenceStore {
             OWLOntology copy = snapshot(reference);
             String mountedBy = reference.mountedBy();
             long revision = reference.revision();
+            List<AcknowledgedChange> history = reference.changeHistory().all();
             long next;
             synchronized (this) {
                 next = Math.max(checkpointSeq, journalSeqs.get(journalSeqs.size() - 1)) + 1;
@@ -188,7 +185,7 @@ final class ReferenceStore {
                 lastCheckpointNanos = System.nanoTime();
                 writeMeta(mountedBy);
             }
-            background.execute(() -> finishCheckpoint(copy, next, revision, mountedBy));
+            background.execute(() -> finishCheckpoint(copy, next, revision, mountedBy, history));
         } catch (IOException | RuntimeException e) {
             LOG.error("checkpoint of '{}' failed; its journal keeps growing until the next one", name, e);
             synchronized (this) {
@@ -197,7 +194,8 @@ final class ReferenceStore {
         }
     }
 
-    private void finishCheckpoint(OWLOntology copy, long seq, long revision, String mountedBy) {
+    private void finishCheckpoint(OWLOntology copy, long seq, long revision, String mountedBy,
+                                  List<AcknowledgedChange> history) {
         try {
             writeCheckpoint(copy, checkpointFile(seq));
             List<Long> obsoleteJournals;
@@ -207,6 +205,7 @@ final class ReferenceStore {
                 obsoleteJournals = journalSeqs.stream().filter(s -> s < seq).toList();
                 checkpointSeq = seq;
                 checkpointRevision = revision;
+                historyInCheckpoint = history;
                 journalSeqs.removeAll(obsoleteJournals);
                 writeMeta(mountedBy);
             }
@@ -262,6 +261,9 @@ final class ReferenceStore {
         JsonArray journals = new JsonArray();
         journalSeqs.forEach(journals::add);
         meta.add("journals", journals);
+        JsonArray recent = new JsonArray();
+        historyInCheckpoint.forEach(change -> recent.add(change.toJson()));
+        meta.add("recent_changes", recent);
         writeDurably(dir.resolve("meta.json"), out -> out.write(meta.toString().getBytes(StandardCharsets.UTF_8)));
     }
 

@@ -1,6 +1,7 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.durability;
 
+import io.github.armor.core.api.AcknowledgedChange;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.CoreConfig.Durability;
 import io.github.armor.core.api.Directive;
@@ -50,12 +51,15 @@ public final class StateStore {
         this.refsDir = durability.stateDir().resolve("refs");
     }
 
-    /** A reference as it was: its checkpoint loaded, the records to replay, its mount holder, its revision. */
+    /**
+     * A reference as it was: its checkpoint loaded, the records to replay, its mount holder, its
+     * revision, and its latest acknowledged changes (for GET REF CHANGES).
+     */
     public record Restorable(String name, OWLOntology ontology, Reference.Settings settings, String mountedBy,
-                             List<JournaledChange> records, long revision, ReferenceStore store) {}
+                             List<AcknowledgedChange> records, long revision, ReferenceStore store,
+                             List<AcknowledgedChange> history) {}
 
     /** One journal record: the directives of one acknowledged change and the revision they made. */
-    public record JournaledChange(long revision, List<Directive> directives) {}
 
     /**
      * Reads every reference found on disk (or, when restoring is off, deletes them for a clean
@@ -78,7 +82,7 @@ public final class StateStore {
                         OWLOntology ontology = files.loadTrusted(r.checkpoint(), importsDir);
                         restoreFormat(ontology, r.formatClass());
                         found.add(new Restorable(r.name(), ontology, r.settings(), r.mountedBy(), r.records(),
-                                r.revision(), r.store()));
+                                r.revision(), r.store(), r.history()));
                     } catch (IOException | RuntimeException e) {
                         Path aside = durability.stateDir().resolve("unreadable").resolve(dir.getFileName()
                                 + "-" + System.currentTimeMillis());

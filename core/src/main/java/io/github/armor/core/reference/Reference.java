@@ -75,6 +75,7 @@ public final class Reference {
     private volatile long lastReasoningNanos;
     // Read by event and subscription threads without the lock; written only under it.
     private volatile long revision;
+    private final ChangeHistory changeHistory = new ChangeHistory();
     // In memory only: derived state (the SPARQL graph) is rebuilt when it moves; read under the lock.
     private long modificationCount;
 
@@ -246,6 +247,11 @@ public final class Reference {
      */
     public long revision() {
         return revision;
+    }
+
+    /** Its latest acknowledged changes (GET REF CHANGES). */
+    public ChangeHistory changeHistory() {
+        return changeHistory;
     }
 
     /** Sets the revision: after an acknowledged change, or to the journal's at a restore. */

@@ -1,0 +1,58 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.reference;
+
+import io.github.armor.core.api.AcknowledgedChange;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.List;
+
+/**
+ * A reference's latest acknowledged changes, so that a client whose answer never arrived (a
+ * lost reply, a 216, a time-out) can learn whether its change was applied before it resends
+ * one (GET REF CHANGES). Bounded by count and by text; the state directory keeps it across
+ * restarts. Thread-safe.
+ */
+public final class ChangeHistory {
+    public static final int MAX_CHANGES = 1000;
+    public static final long MAX_TEXT = 4L << 20;
+
+    private final ArrayDeque<AcknowledgedChange> changes = new ArrayDeque<>();
+    private long text;
+
+    /** Adds a change newer than every kept one (an older or repeated revision is ignored). */
+    public synchronized void add(AcknowledgedChange change) {
+        if (!changes.isEmpty() && change.revision() <= changes.peekLast().revision()) {
+            return;
+        }
+        changes.addLast(change);
+        text += change.textLength();
+        while (changes.size() > MAX_CHANGES || (text > MAX_TEXT && changes.size() > 1)) {
+            text -= changes.removeFirst().textLength();
+        }
+    }
+
+    public synchronized void addAll(Collection<AcknowledgedChange> earlier) {
+        earlier.forEach(this::add);
+    }
+
+    /** The kept changes after {@code revision}, oldest first. */
+    public synchronized List<AcknowledgedChange> since(long revision) {
+        List<AcknowledgedChange> after = new ArrayList<>();
+        for (AcknowledgedChange change : changes) {
+            if (change.revision() > revision) {
+                after.add(change);
+            }
+        }
+        return after;
+    }
+
+    /** The revision of the oldest kept change, or -1 when none is kept. */
+    public synchronized long oldestRevision() {
+        return changes.isEmpty() ? -1 : changes.peekFirst().revision();
+    }
+
+    public synchronized List<AcknowledgedChange> all() {
+        return new ArrayList<>(changes);
+    }
+}
