@@ -12,15 +12,14 @@ measures lists until its count or its time budget (measured lists only) runs out
 - non-buffered reasoner (the LOAD default): HermiT is brought up to date after every change.
 """
 
-import argparse
 import json
 import pathlib
 import statistics
 import subprocess
-import tempfile
 import time
 
-from harness import REPO, SCALES, BenchNode, CoreSnapshot, Deadline, HARNESS_CLASS
+from harness import (REPO, BenchNode, CoreSnapshot, Deadline, HARNESS_CLASS,
+                     script_scale_and_scratch)
 
 ROBOTICS = REPO / 'ontologies' / 'robotics.owl'
 ROOMS = ('kitchen', 'bedroom')
@@ -107,11 +106,7 @@ def measure(lists_by_size: dict, budget_s: float, scratch: pathlib.Path,
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
-    parser.add_argument('--smoke', action='store_true', help='tiny sizes, a few seconds')
-    options = parser.parse_args()
-    scale = SCALES['smoke' if options.smoke else 'full']
-    scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
+    scale, scratch = script_scale_and_scratch(__doc__)
     print(json.dumps(measure(scale.batch_lists, scale.batch_budget_s, scratch,
                              CoreSnapshot(scratch), scale.warmup_lists), indent=2))
 

@@ -10,17 +10,15 @@ samples. Each sample is put in the first component, in COMPONENTS order, that ha
 anywhere on its stack: the share of samples per component is where the time goes.
 """
 
-import argparse
 import collections
 import json
 import pathlib
 import re
 import subprocess
-import tempfile
 import time
 
 from batch_throughput import directive_list
-from harness import REPO, SCALES, BenchNode, CoreSnapshot, Deadline
+from harness import REPO, BenchNode, CoreSnapshot, Deadline, script_scale_and_scratch
 
 COMPONENTS = (  # (component, frame prefixes); the first match on a sample's stack wins
     ('naming: EntityResolver (plain name -> IRI)',
@@ -161,11 +159,7 @@ def profile_cycle(scratch: pathlib.Path, snapshot: CoreSnapshot, abox_path: path
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
-    parser.add_argument('--smoke', action='store_true', help='tiny sizes, a few seconds')
-    options = parser.parse_args()
-    scale = SCALES['smoke' if options.smoke else 'full']
-    scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
+    scale, scratch = script_scale_and_scratch(__doc__)
     started = time.monotonic()
     print(json.dumps(profile_batch(scratch, CoreSnapshot(scratch), scale.profile_s), indent=2))
     print(f'{time.monotonic() - started:.0f} s')

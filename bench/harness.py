@@ -38,6 +38,21 @@ def latency_summary(samples: Sequence[float]) -> Dict[str, float]:
             'p99_ms': percentile(samples, 0.99) * 1000, 'mean_ms': statistics.fmean(samples) * 1000}
 
 
+def script_scale_and_scratch(description: str):
+    """What a benchmark run as a script starts from: its --smoke flag read, a scratch folder.
+
+    Returns:
+        (the Scale, smoke or full; a new temporary folder).
+    """
+    import argparse
+    import tempfile
+    parser = argparse.ArgumentParser(description=description.strip().splitlines()[0])
+    parser.add_argument('--smoke', action='store_true', help='tiny sizes, a few seconds')
+    options = parser.parse_args()
+    return (SCALES['smoke' if options.smoke else 'full'],
+            pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-')))
+
+
 class Deadline:
     """A wall-clock budget: how much is left, and whether it ran out."""
 

@@ -15,7 +15,6 @@ each mode a wall-clock budget. A mode that runs out of time is reported as not f
 its node is replaced, since the core goes on reasoning for a request nobody waits for.
 """
 
-import argparse
 import json
 import os
 import pathlib
@@ -23,12 +22,11 @@ import signal
 import statistics
 import subprocess
 import sys
-import tempfile
 import threading
 import time
 
 from abox import RoboticsABox
-from harness import REPO, SCALES, BenchNode, CoreSnapshot, Deadline
+from harness import REPO, BenchNode, CoreSnapshot, Deadline, script_scale_and_scratch
 
 REASONERS = ('HERMIT', 'PELLET', 'JFACT', 'ELK')
 OWLREADY_REASONERS = ('hermit', 'pellet')
@@ -213,11 +211,7 @@ def measure(abox_sizes, cycles: int, budgets: dict, owlready_budgets: dict,
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
-    parser.add_argument('--smoke', action='store_true', help='tiny sizes, a few seconds')
-    options = parser.parse_args()
-    scale = SCALES['smoke' if options.smoke else 'full']
-    scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
+    scale, scratch = script_scale_and_scratch(__doc__)
     results = measure(scale.abox_sizes, scale.cycles, scale.cycle_budget_s,
                       scale.owlready_budget_s, scratch, CoreSnapshot(scratch))
     for individuals, sides in results.items():

@@ -14,20 +14,18 @@
   and Konclude realising the file from scratch.
 """
 
-import argparse
 import json
 import os
 import pathlib
 import shutil
 import statistics
 import subprocess
-import tempfile
 import threading
 import time
 from typing import Dict, List
 
 from abox import RoboticsABox
-from harness import SCALES, BenchNode, CoreSnapshot, Deadline
+from harness import BenchNode, CoreSnapshot, Deadline, script_scale_and_scratch
 from reasoning_cycle import ROBOT_MODE, WHOLE_ONTOLOGY, _run_mode, summarise
 
 MODULAR = ('PELLET', 'HERMIT')
@@ -222,11 +220,7 @@ def _konclude(abox_path: pathlib.Path, individuals: int, budget_s: float) -> dic
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
-    parser.add_argument('--smoke', action='store_true', help='tiny sizes, a few seconds')
-    options = parser.parse_args()
-    scale = SCALES['smoke' if options.smoke else 'full']
-    scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
+    scale, scratch = script_scale_and_scratch(__doc__)
     snapshot = CoreSnapshot(scratch)
     for label, run in measure_large(scratch, snapshot, scale.large_abox, scale.cycles,
                                     scale.large_budget_s).items():

@@ -7,7 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.events.ChangeEvent;
@@ -40,12 +39,8 @@ class ChangeEventsTest {
 
     /** A core on the state directory (the previous one closed first, as a restart does), its events collected. */
     private ArmorCore core(int checkpointEvery) {
-        cores.forEach(ArmorCore::close);
-        ArmorCore core = new ArmorCore(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES), false, 30_000,
-                0, 0, new CoreConfig.Durability(stateDir, true, false, checkpointEvery, 3600)));
-        core.restoreState();
+        ArmorCore core = CoreFixture.restartOn(cores, stateDir, "HERMIT", true, false, checkpointEvery);
         core.events().addListener(this::collect);
-        cores.add(core);
         return core;
     }
 

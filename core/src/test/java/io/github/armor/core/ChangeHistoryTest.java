@@ -7,7 +7,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
-import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.reference.ChangeHistory;
@@ -36,17 +35,11 @@ class ChangeHistoryTest {
     }
 
     private ArmorCore core(int checkpointEvery) {
-        cores.forEach(ArmorCore::close);
-        ArmorCore core = new ArmorCore(new CoreConfig(true, "PELLET", List.of(CoreFixture.ONTOLOGIES), false, 30_000,
-                0, 0, new CoreConfig.Durability(stateDir, true, false, checkpointEvery, 3600)));
-        core.restoreState();
-        cores.add(core);
-        return core;
+        return CoreFixture.restartOn(cores, stateDir, "PELLET", true, false, checkpointEvery);
     }
 
     private static Response run(ArmorCore core, String client, String reference, String words, String... args) {
-        String[] parts = (words + " - -").split("\\s+");
-        return core.execute(Directive.of(client, reference, parts[0], parts[1], parts[2], args));
+        return new CoreFixture(core).runAs(client, reference, words, args);
     }
 
     private static Response ok(ArmorCore core, String client, String reference, String words, String... args) {

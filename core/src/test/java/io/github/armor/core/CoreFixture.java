@@ -56,6 +56,21 @@ final class CoreFixture {
                 "false", reasoner, String.valueOf(bufferedReasoner));
     }
 
+    /**
+     * A core on a state directory as a restart makes one: the cores in {@code running} closed
+     * first (they release the directory), its state restored (unless {@code restore} is false);
+     * it joins {@code running}.
+     */
+    static ArmorCore restartOn(List<ArmorCore> running, Path stateDir, String reasoner, boolean restore,
+                               boolean fsync, int checkpointEvery) {
+        running.forEach(ArmorCore::close);
+        ArmorCore core = new ArmorCore(new CoreConfig(true, reasoner, List.of(ONTOLOGIES), false, 30_000, 0, 0,
+                new CoreConfig.Durability(stateDir, restore, fsync, checkpointEvery, 3600)));
+        core.restoreState();
+        running.add(core);
+        return core;
+    }
+
     static String iri(String name) {
         return "<" + NS + name + ">";
     }

@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
 import java.nio.file.Files;
@@ -33,12 +32,7 @@ class DurabilityTest {
 
     /** A core on the state directory; the previous one is closed first, as a restart does. */
     private ArmorCore core(boolean restore, int checkpointEvery) {
-        cores.forEach(ArmorCore::close);
-        ArmorCore core = new ArmorCore(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES), false, 30_000,
-                0, 0, new CoreConfig.Durability(stateDir, restore, true, checkpointEvery, 3600)));
-        core.restoreState();
-        cores.add(core);
-        return core;
+        return CoreFixture.restartOn(cores, stateDir, "HERMIT", restore, true, checkpointEvery);
     }
 
     private static Response ok(ArmorCore core, String client, String reference, String words, String... args) {
