@@ -52,6 +52,29 @@ class DispatchTest {
         assertTrue(objects.contains("closest: QUERY OBJECTPROP IND (prop, ind)"), objects);
     }
 
+    /**
+     * The suggestions look at a name's neighbours in sorted order, not at every name (an ADD of a
+     * new individual asks for them): a typo at either end, or in the middle, of a name among
+     * thousands of alike ones is still found.
+     */
+    @Test
+    void suggestionsAmongThousandsOfAlikeNamesFindTheNameATypoCameFrom() {
+        CoreFixture f = fixture();
+        f.ok("map", "CREATE", "http://example.org/many", "false", "HERMIT", "true");
+        List<Directive> adds = new java.util.ArrayList<>();
+        for (int i = 0; i < 5000; i++) {
+            adds.add(Directive.of("test", "map", "ADD", "IND", "CLASS", "agent_" + i, "Agent"));
+        }
+        adds.add(Directive.of("test", "map", "ADD", "IND", "CLASS", "kitchen_sink", "Place"));
+        assertTrue(f.core.executeList(adds).success());
+        for (String typo : List.of("kitchen_sinc", "kitchn_sink", "xitchen_sink")) {
+            String said = f.ok("map", "ADD IND CLASS", typo, "Place").errorDescription();
+            assertTrue(said.contains("individual '" + typo + "' (did you mean kitchen_sink"), said);
+        }
+        String nearAgents = f.ok("map", "ADD IND CLASS", "agent_4x21", "Agent").errorDescription();
+        assertTrue(nearAgents.contains("did you mean agent_4"), nearAgents);
+    }
+
     /** Issue 11 item 7: a name new to the reference is said (with the names it is close to). */
     @Test
     void namesNewToTheReferenceAreSaidAndStrictNamesRefusesThemInQueries() {
