@@ -104,7 +104,7 @@ class ArmorService(Node):
 
     def on_core_event(self, event: dict) -> None:
         """Publish what the core announces (on its event thread, in the core's order)."""
-        if event.get('event') == 'change' and not os.environ.get('EXP_NO_PUBLISH'):
+        if event.get('event') == 'change':
             self._change_publisher.publish(wire.change_from_json(event))
 
     def shutdown_core(self) -> None:
