@@ -60,6 +60,73 @@ class EchoFloor:
         self.process.wait()
 
 
+class CoreAlone:
+    """A core reached over its socket from a process with no ROS in it: the core's share.
+
+    Same jar, same settings as the node's core (journal forced to disk), robotics.owl loaded
+    as the node preloads it; what the service costs above this is the node's and ROS's part.
+    It runs in a process of its own (core_alone), as a process with rclpy threads spinning
+    makes every hand-off between threads dearer.
+    """
+
+    def __init__(self, scratch: pathlib.Path, jar: str):
+        from armor_service.core_process import CoreProcess
+        from armor_service.parameters import core_parameters
+        settings = {p.name: p.default() if callable(p.default) else p.default
+                    for p in core_parameters()}
+        settings.update(allowed_dirs=[str(REPO / 'ontologies')],
+                        state_dir=str(scratch / 'core-alone-state'), restore_state=False)
+        self.core = CoreProcess(jar, settings)
+        self.core.start()
+        loaded = self.call('robotics', 'LOAD FILE', str(REPO / 'ontologies' / 'robotics.owl'),
+                           '', 'false', '', 'false')  # as the node's preload
+        if not loaded.success:
+            raise RuntimeError(f'LOAD failed: {loaded.exit_code} {loaded.error_description}')
+
+    def call(self, reference: str, words: str, *args):
+        from armor_service import wire
+        command, primary, secondary = (words.split() + ['', ''])[:3]
+        directive = {'client_name': 'bench', 'reference_name': reference, 'command': command,
+                     'primary_command_spec': primary, 'secondary_command_spec': secondary,
+                     'args': list(args)}
+        reply = self.core.request({'op': 'directive', 'directive': directive}, 120)
+        return wire.response_from_json(reply['response'])
+
+    def stop(self):
+        self.core.stop()
+
+
+CORE_ALONE_CALLS = {
+    'QUERY': lambda core, i: core.call('robotics', 'QUERY IND CLASS', 'OccupiedRoom'),
+    'ADD': lambda core, i: core.call('robotics', 'ADD IND CLASS', f'probe{i}', 'Robot'),
+}
+
+
+def core_alone(command: str, calls: int, scratch: pathlib.Path, jar: str) -> dict:
+    """The same command's round trips to a core alone, measured in a new process."""
+    finished = subprocess.run(
+        [sys.executable, __file__, '--core-alone', command, '--calls', str(calls),
+         '--scratch', str(scratch), '--jar', jar], capture_output=True, text=True, timeout=600)
+    if finished.returncode != 0:
+        raise RuntimeError(f'core alone ({command}) failed: {finished.stderr[-2000:]}')
+    return json.loads(finished.stdout)
+
+
+def _core_alone_worker(command: str, calls: int, scratch: pathlib.Path, jar: str) -> dict:
+    core = CoreAlone(scratch, jar)
+    try:
+        samples = []
+        for i in range(-min(50, calls), calls):
+            seconds, answer = _timed(lambda: CORE_ALONE_CALLS[command](core, i + calls))
+            if not answer.success:
+                raise RuntimeError(f'{command} failed: {answer.exit_code} {answer.error_description}')
+            if i >= 0:
+                samples.append(seconds)
+        return latency_summary(samples)
+    finally:
+        core.stop()
+
+
 def _timed(call):
     start = time.perf_counter()
     answer = call()
@@ -110,6 +177,9 @@ def measure(calls: int, scratch: pathlib.Path, snapshot: CoreSnapshot, commands=
                     if i >= 0:
                         samples[name].append(seconds)
             results[command] = {name: latency_summary(values) for name, values in samples.items()}
+            results[command]['core_alone'] = core_alone(command, len(samples['service']),
+                                                        scratch / f'alone-{command}',
+                                                        snapshot.jar)
         return results
     finally:
         for floor in floors.values():
@@ -123,7 +193,14 @@ def main():
     parser.add_argument('--budget-s', type=float, default=300, help='per command')
     parser.add_argument('--commands', default='QUERY',
                         help='comma-separated subset of ' + ','.join(COMMANDS))
+    parser.add_argument('--core-alone', metavar='COMMAND', help=argparse.SUPPRESS)
+    parser.add_argument('--scratch', type=pathlib.Path, help=argparse.SUPPRESS)
+    parser.add_argument('--jar', help=argparse.SUPPRESS)
     options = parser.parse_args()
+    if options.core_alone:
+        print(json.dumps(_core_alone_worker(options.core_alone, options.calls, options.scratch,
+                                            options.jar)))
+        return
     scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
     results = measure(options.calls, scratch, CoreSnapshot(scratch),
                       commands=options.commands.split(','), budget_s=options.budget_s)

@@ -77,6 +77,30 @@ def _memory(modes: dict) -> Dict[str, float]:
     return {'node': node, 'core': core, 'total': node + core}
 
 
+def _round_trip_shares(transport: dict) -> list:
+    """Where a round trip goes, from benchmark 1's paths of the same run (when it has them)."""
+    if 'core_alone' not in transport.get('QUERY', {}):
+        return []
+    parts = []
+    for command, target in (('QUERY', ISSUE15_QUERY_TARGET), ('ADD', ISSUE15_ADD_TARGET)):
+        paths = transport[command]
+        floor, executor = paths['floor']['p50_ms'], paths['multi_echo']['p50_ms']
+        core, service = paths['core_alone']['p50_ms'], paths['service']['p50_ms']
+        room = target * floor - executor
+        verdict = ('more than the core alone takes' if room >= core
+                   else 'less than the core alone takes')
+        parts.append(f'{command}: {_ms(service)} = the echo on the node\'s executor '
+                     f'{_ms(executor)} ({executor / floor:.2f}x the floor) + the core alone '
+                     f'{_ms(core)} (its socket from a process without ROS) + '
+                     f'{_ms(max(service - executor - core, 0))} for the hand-off between the '
+                     f'node\'s threads and the core; the target leaves {_ms(max(room, 0))} above '
+                     f'the executor, {verdict}')
+    return ['Where the round trips go (p50, benchmark 1 of this run): ' + '; '.join(parts)
+            + '. The core runs as a process of its own so that the node survives a reasoner '
+            'that hangs or runs out of memory; the hand-off is its price. The core\'s part of an '
+            'ADD is in the single-ADD profile of section 5.', '']
+
+
 def _slowest_part(transport: dict, batch: list, profiles: dict) -> str:
     """The benchmark furthest from its target, and where the core's time goes in it."""
     gaps = []  # (how many times worse than the target, what, profile of that workload)
@@ -248,6 +272,7 @@ def _robot_speed(results: dict) -> List[str]:
            f'(`{WHOLE_ONTOLOGY[whole_label]}`), which the service uses as it did before: on the '
            'whole ontology, rebuilt after every removal.', '',
            _table(['figure', 'this run', 'reference (same run)', 'target', 'met'], rows), '']
+    out += _round_trip_shares(transport)
     out += [f'### The cycle at {speed["large_individuals"]:,} individuals', '',
             'Benchmark 3\'s cycle (non-buffered, no REASON), one node per reasoner.', '']
     rows = []
@@ -364,10 +389,13 @@ def render(results: dict) -> str:
             'with 16 threads and a reentrant group, as the node spins. ADD adds a new individual '
             'every call to the preloaded reference (HermiT, non-buffered: the reasoner is brought '
             'up to date after each change; journal forced to disk) and to a reference with a '
-            'buffered reasoner.', '']
+            'buffered reasoner. "The core alone" sends the same directives, as many, to a core '
+            'of the same jar and settings over its socket from a process without ROS (after the '
+            'interleaved paths): the core\'s share of the round trip.', '']
     names = {'service': 'ARMOR service', 'service_buffered_reasoner':
              'ARMOR service, buffered reasoner', 'floor': 'bare rclpy echo (floor)',
-             'multi_echo': "echo on the node's executor"}
+             'multi_echo': "echo on the node's executor",
+             'core_alone': 'the core alone (its socket, from this process; no ROS)'}
     rows = []
     for command in ('QUERY', 'ADD'):
         paths = transport[command]
