@@ -220,7 +220,8 @@ def cost_of_pages(browser, url: str, node: BenchNode, mover: Mover, pages: int,
                 page = context.new_page()
                 page.goto(url + f'#/{REFERENCE}/graph')
                 open_pages.append(page)
-            open_pages[-1].wait_for_selector('#graph-note:has-text("links")')
+            # A large reference's first graph can take long on a loaded machine.
+            open_pages[-1].wait_for_selector('#graph-note:has-text("links")', timeout=180_000)
         result: Dict[str, Dict[str, List[float]]] = {}
         stop = threading.Event()
         worker = threading.Thread(target=lambda: result.update(
@@ -236,7 +237,7 @@ def cost_of_pages(browser, url: str, node: BenchNode, mover: Mover, pages: int,
             # Every page shows another tab (its fetches); every fifth pass, reloads.
             for page in open_pages:
                 if turn % 5 == 4:
-                    page.reload()
+                    page.reload(timeout=180_000)
                 else:
                     page.click(f'.tabs button[data-tab="{TABS[turn % len(TABS)]}"]')
             open_pages[-1].wait_for_timeout(200)
