@@ -3,6 +3,7 @@ package io.github.armor.core.view;
 
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.reasoning.ModularReasoner;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
 import java.util.HashSet;
@@ -116,6 +117,12 @@ final class ViewReads {
         return inferred(reference, reasoner -> {
             Set<OWLClass> direct = reasoner.getTypes(individual, true).entities().filter(c -> !c.isOWLThing())
                     .collect(Collectors.toCollection(HashSet::new));
+            if (reasoner instanceof ModularReasoner) {
+                // Its direct types come from a fresh reasoning of the individual's module, never
+                // from incremental realisation; and a superclass question would wake its reasoner
+                // on the whole ontology, seconds on a large one after every change.
+                return direct;
+            }
             Set<OWLClass> implied = new HashSet<>();
             for (OWLClass type : direct) {
                 reasoner.getSuperClasses(type, false).entities().forEach(implied::add);
