@@ -46,6 +46,14 @@ SEQUENTIAL_REFERENCE = 'sequential'
 HISTORY_POLL_S = 0.5
 
 
+_STARTED = time.monotonic()
+
+
+def progress(text: str) -> None:
+    print(f'[default_clients {time.monotonic() - _STARTED:6.0f} s] {text}', file=sys.stderr,
+          flush=True)
+
+
 def service_name(namespace: str) -> str:
     from armor_contract.services import DIRECTIVE_SERVICE
     return f'{namespace}/{DIRECTIVE_SERVICE}'
@@ -212,6 +220,7 @@ def run_sequential(node: BenchNode, scratch: pathlib.Path, clients: int, directi
         if process.wait(timeout=max(900, directives)) != 0:
             raise RuntimeError(f'a sequential client failed (exit {process.returncode})')
     wall_s = time.monotonic() - started
+    progress('sequential clients done; recovery and audit')
     results = [json.loads(out.read_text()) for out in outs]
     follower.catch_up()
     applied = added_by(follower.changes)
@@ -292,6 +301,7 @@ def run_flood(node: BenchNode, directives: int, per_reference: int, quiet_s: flo
     messages = [request(me, reference, 'ADD IND CLASS', name, CLASS)
                 for reference, name in targets]
     answered_after, wall_s = flood(service_name(node.namespace), messages, quiet_s)
+    progress('flood done; recovery and audit')
     applied: Dict[str, int] = {}
     for reference in references:
         applied.update(added_by(changes_since(coordinator, 'auditor', reference,
@@ -464,8 +474,10 @@ def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, clients: int = 8,
             echo: bool = True) -> dict:
     """Figures of the sequential run, the flood on ARMOR and the flood on the bare echo server."""
     import rclpy
-    node = BenchNode(scratch, snapshot)
-    rclpy.init()
+    node = BenchNode(scratch, snapshot)  # its ArmorTransport may have started rclpy already
+    owns_rclpy = not rclpy.ok()
+    if owns_rclpy:
+        rclpy.init()
     coordinator = None
     try:
         coordinator = DefaultClient(service_name(node.namespace), 'coordinator')
@@ -473,18 +485,22 @@ def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, clients: int = 8,
                                 'query_every': query_every, 'flood': flood_directives,
                                 'flood_per_reference': flood_per_reference,
                                 'quiet_s': quiet_s, 'timeout_s': timeout_s}}
+        progress(f'{clients} sequential clients x {directives} directives')
         results['sequential'] = run_sequential(node, scratch, clients, directives, query_every,
                                                timeout_s, coordinator)
+        progress(f'flood of {flood_directives} on ARMOR')
         results['flood'] = run_flood(node, flood_directives, flood_per_reference, quiet_s,
                                      timeout_s, coordinator)
         if echo:
+            progress(f'flood of {flood_directives} on a bare echo server')
             results['echo_flood'] = run_echo_flood(node.namespace, flood_directives, quiet_s)
         return results
     finally:
         if coordinator is not None:
             coordinator.close()
-        rclpy.shutdown()
         node.stop()
+        if owns_rclpy:
+            rclpy.try_shutdown()
 
 
 ROWS = (('sequential', 'sequential clients, ARMOR'), ('flood', 'flood, ARMOR'),
