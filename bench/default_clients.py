@@ -42,7 +42,7 @@ from harness import BenchNode, CoreSnapshot, latency_summary
 
 ECHO_NODE = 'default_qos_echo'
 CLASS = 'Marker'
-SEQUENTIAL_REFERENCE = 'sequential'
+SEQUENTIAL_REFERENCE = 'default_qos_sequential'
 HISTORY_POLL_S = 0.5
 
 
@@ -203,9 +203,10 @@ def sequential_client(service: str, index: int, directives: int, query_every: in
     rclpy.shutdown()
 
 
-def run_sequential(node: BenchNode, scratch: pathlib.Path, clients: int, directives: int,
+def run_sequential(namespace: str, scratch: pathlib.Path, clients: int, directives: int,
                    query_every: int, timeout_s: float, coordinator: DefaultClient) -> dict:
-    service = service_name(node.namespace)
+    """Sequential client processes on one reference; figures, recovery and audit."""
+    service = service_name(namespace)
     create(coordinator, SEQUENTIAL_REFERENCE)
     follower = HistoryFollower(service, SEQUENTIAL_REFERENCE,
                                revision(coordinator, 'auditor', SEQUENTIAL_REFERENCE))
@@ -227,7 +228,7 @@ def run_sequential(node: BenchNode, scratch: pathlib.Path, clients: int, directi
     records = [r for result in results for r in result['records']]
     figures = count(records, applied, wall_s)
     recovery = {'unanswered_adds': 0, 'applied_via_history': 0, 'resent': 0, 'undecidable': 0,
-                'history_missed': 0}
+                'window_missed': 0}
     for result in results:
         unanswered = [r['name'] for r in result['records']
                       if r['kind'] == 'ADD' and not r['answered']]
@@ -289,10 +290,11 @@ def flood(service: str, messages: List, quiet_s: float) -> Tuple[List[Optional[f
     return answered_after, wall_s
 
 
-def run_flood(node: BenchNode, directives: int, per_reference: int, quiet_s: float,
+def run_flood(namespace: str, directives: int, per_reference: int, quiet_s: float,
               timeout_s: float, coordinator: DefaultClient) -> dict:
+    """One flood of ADDs from this process; figures, recovery and audit."""
     me = 'flooder'
-    references = [f'flood{i}' for i in range(-(-directives // per_reference))]
+    references = [f'default_qos_flood{i}' for i in range(-(-directives // per_reference))]
     start_revisions = {}
     for reference in references:
         create(coordinator, reference)
@@ -300,7 +302,7 @@ def run_flood(node: BenchNode, directives: int, per_reference: int, quiet_s: flo
     targets = [(references[k // per_reference], f'{me}_{k}') for k in range(directives)]
     messages = [request(me, reference, 'ADD IND CLASS', name, CLASS)
                 for reference, name in targets]
-    answered_after, wall_s = flood(service_name(node.namespace), messages, quiet_s)
+    answered_after, wall_s = flood(service_name(namespace), messages, quiet_s)
     progress('flood done; recovery and audit')
     applied: Dict[str, int] = {}
     for reference in references:
@@ -311,7 +313,7 @@ def run_flood(node: BenchNode, directives: int, per_reference: int, quiet_s: flo
                for (_, name), seconds in zip(targets, answered_after)]
     figures = count(records, applied, wall_s)
     recovery = {'unanswered_adds': 0, 'applied_via_history': 0, 'resent': 0, 'undecidable': 0,
-                'history_missed': 0}
+                'window_missed': 0}
     final = {'missing': 0, 'unexpected': 0, 'listed_twice': 0, 'applied_twice': 0,
              'history_missed': 0}
     for reference in references:
@@ -419,13 +421,13 @@ def recover(caller: DefaultClient, client_name: str, reference: str, since: int,
     added by its own client alone) and counted apart.
     """
     figures = {'unanswered_adds': len(unanswered), 'applied_via_history': 0, 'resent': 0,
-               'undecidable': 0, 'history_missed': 0}
+               'undecidable': 0, 'window_missed': 0}
     pending = list(unanswered)
     for _ in range(rounds):
         if not pending:
             break
         changes, missed = changes_since(caller, client_name, reference, since)
-        figures['history_missed'] += missed
+        figures['window_missed'] += missed
         applied = added_by(changes, client_name)
         found = [name for name in pending if name in applied]
         figures['applied_via_history'] += len(found)
@@ -486,11 +488,11 @@ def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, clients: int = 8,
                                 'flood_per_reference': flood_per_reference,
                                 'quiet_s': quiet_s, 'timeout_s': timeout_s}}
         progress(f'{clients} sequential clients x {directives} directives')
-        results['sequential'] = run_sequential(node, scratch, clients, directives, query_every,
-                                               timeout_s, coordinator)
+        results['sequential'] = run_sequential(node.namespace, scratch, clients, directives,
+                                               query_every, timeout_s, coordinator)
         progress(f'flood of {flood_directives} on ARMOR')
-        results['flood'] = run_flood(node, flood_directives, flood_per_reference, quiet_s,
-                                     timeout_s, coordinator)
+        results['flood'] = run_flood(node.namespace, flood_directives, flood_per_reference,
+                                     quiet_s, timeout_s, coordinator)
         if echo:
             progress(f'flood of {flood_directives} on a bare echo server')
             results['echo_flood'] = run_echo_flood(node.namespace, flood_directives, quiet_s)
@@ -535,12 +537,14 @@ def render(results: dict) -> str:
                      for key, label in ROWS if key in results])
     lines += ['', 'Recovery of the unanswered ADDs (GET REF CHANGES since the revision read '
               'before starting; resend only what it does not show), then the check:', '']
-    columns = ('unanswered_adds', 'applied_via_history', 'resent', 'undecidable', 'missing',
-               'unexpected', 'listed_twice', 'applied_twice', 'history_missed')
+    columns = ('unanswered_adds', 'applied_via_history', 'resent', 'undecidable',
+               'window_missed', 'missing', 'unexpected', 'listed_twice', 'applied_twice',
+               'history_missed')
     lines += _table(['run', 'unanswered ADDs', 'found applied via history', 'resent',
-                     'undecidable from history', 'final missing', 'unexpected',
-                     'listed twice by QUERY', 'applied twice (history)',
-                     'history revisions not seen'],
+                     'undecidable from history (looked up by QUERY)',
+                     'revisions no longer kept when the client asked', 'final missing',
+                     'unexpected', 'listed twice by QUERY', 'applied twice (history)',
+                     'revisions the audit did not see'],
                     [[label, *(_cell(results[key]['recovery'][c]) for c in columns)]
                      for key, label in ROWS[:2] if key in results])
     lines += ['']
