@@ -468,6 +468,13 @@ def audit(caller: DefaultClient, reference: str, expected: List[str], adds: Dict
             'history_missed': history_missed}
 
 
+# The suite's short variant (make bench) and its smoke run; the script's defaults are the long run.
+SUITE_SIZES = {
+    'full': {'clients': 8, 'directives': 300, 'flood_directives': 3000, 'quiet_s': 10},
+    'smoke': {'clients': 2, 'directives': 20, 'flood_directives': 200, 'quiet_s': 2},
+}
+
+
 # --- the whole measurement, and the table -----------------------------------------------------
 
 def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, clients: int = 8,
