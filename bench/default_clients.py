@@ -15,15 +15,19 @@ KEEP_LAST 10), not with armor_client. This measures such clients (issue 20, item
    individuals go to references of --flood-per-reference each, so that every reference's
    change history (the last 1,000 changes) still holds all of them for the recovery;
 3. the same flood against a bare rclpy echo server with the default QoS that counts what it
-   receives: whatever is lost there is lost between rclpy's queues, not in ARMOR.
+   receives (requests it never received, answers it sent that never arrived): the same losses
+   with a server that does nothing but answer.
 
 An unanswered ADD was either never received (request lost) or applied without its answer
 reaching the client (answer lost); the reference's change history tells which. Then every
 client with unanswered directives recovers as a retrying client should: GET REF CHANGES since
 the revision it read before it started tells which of its changes were applied; it resends
 only the others. Last, a QUERY must show every individual exactly once, and the history no
-individual added twice. For the sequential run the history is followed during the run (its
-1,000 changes would not cover 8 x 2,000 directives), so the duplicate count is exact there too.
+individual added twice. For the sequential run the audit follows the history during the run
+(its 1,000 changes would not cover 8 x 2,000 directives), so the duplicate count is exact there
+too; a sequential client's own question comes too late for the history (it reads the revision
+once, before its 2,000 directives), so what it cannot decide is looked up with a QUERY and
+counted apart.
 
 Run as a script it prints a table; the suite (bench/suite.py) calls measure() at a small size.
 """
@@ -549,7 +553,7 @@ def render(results: dict) -> str:
                'history_missed')
     lines += _table(['run', 'unanswered ADDs', 'found applied via history', 'resent',
                      'undecidable from history (looked up by QUERY)',
-                     'revisions no longer kept when the client asked', 'final missing',
+                     'revisions no longer kept when the client asked (sum)', 'final missing',
                      'unexpected', 'listed twice by QUERY', 'applied twice (history)',
                      'revisions the audit did not see'],
                     [[label, *(_cell(results[key]['recovery'][c]) for c in columns)]
@@ -559,7 +563,7 @@ def render(results: dict) -> str:
         if key in results:
             r = results[key]
             lines.append(f'- {label}: answered/sent {r["answered"] / r["sent"]:.3f}, '
-                         f'{r["sent"] / r["wall_s"]:,.0f} directives/s')
+                         f'{r["answered"] / r["wall_s"]:,.0f} answers/s until the last answer')
     if 'echo_flood' in results:
         armor, echo = results['flood'], results['echo_flood']
         armor_lost = armor['sent'] - armor['answered']
