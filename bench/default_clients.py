@@ -174,6 +174,7 @@ class HistoryFollower:
 
     def close(self):
         self.stop()
+        self.caller.executor.shutdown()
         self.caller.close()
 
 
@@ -290,6 +291,7 @@ def flood(service: str, messages: List, quiet_s: float) -> Tuple[List[Optional[f
         if not future.done():
             client.remove_pending_request(future)
     executor.remove_node(node)
+    executor.shutdown()
     node.destroy_node()
     return answered_after, wall_s
 
