@@ -8,7 +8,7 @@
 (tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set
 with the environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
 (query_latency.py, batch_throughput.py, reasoning_cycle.py, robot_speed.py,
-core_profile.py, lubm.py).
+core_profile.py, lubm.py, default_clients.py).
 """
 
 import argparse
@@ -25,6 +25,7 @@ import time
 from harness import REPO, SCALES, CoreSnapshot
 import batch_throughput
 import core_profile
+import default_clients
 import lubm
 import query_latency
 import reasoning_cycle
@@ -124,9 +125,14 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
     }
     stage('6. SPARQL on LUBM')
     results['lubm'] = lubm.measure(lubm.SCALES[scale_name], scratch, snapshot)
+    stage('8. plain rclpy clients with the default QoS (issue 20)')
+    results['default_clients'] = default_clients.measure(
+        scratch, snapshot, **default_clients.SUITE_SIZES[scale_name])
     results['duration_s'] = time.monotonic() - started
     (scratch / 'results.json').write_text(json.dumps(results, indent=2, default=str))
-    report_path.write_text(report.render(results) + '\n')
+    report_path.write_text(report.render(results) + '\n\n'
+                           + '## 8. Plain rclpy clients with the default QoS (issue 20)\n\n'
+                           + default_clients.render(results['default_clients']) + '\n')
     stage(f'report written to {report_path} (raw figures: {scratch / "results.json"})')
     return results
 
