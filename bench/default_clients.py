@@ -13,7 +13,7 @@ KEEP_LAST 10), not with armor_client. This measures such clients (issue 20, item
 2. flood: this process sends --flood ADD IND CLASS with call_async all at once (an executor
    thread collects the answers) and waits until no answer has come for --quiet-s; the
    individuals go to references of --flood-per-reference each, so that every reference's
-   change history (the last 1,000 changes) still holds all of them for the recovery;
+   change history (the last 10,000 changes) holds all of them for the recovery;
 3. the same flood against a bare rclpy echo server with the default QoS that counts what it
    receives (requests it never received, answers it sent that never arrived): the same losses
    with a server that does nothing but answer.
@@ -24,7 +24,7 @@ client with unanswered directives recovers as a retrying client should: GET REF 
 the revision it read before it started tells which of its changes were applied; it resends
 only the others. Last, a QUERY must show every individual exactly once, and the history no
 individual added twice. For the sequential run the audit follows the history during the run
-(its 1,000 changes would not cover 8 x 2,000 directives), so the duplicate count is exact there
+(its 10,000 changes would not cover 8 x 2,000 directives), so the duplicate count is exact there
 too; a sequential client's own question comes too late for the history (it reads the revision
 once, before its 2,000 directives), so what it cannot decide is looked up with a QUERY and
 counted apart.

@@ -97,7 +97,7 @@ class ChangeHistory(list):
 
     Attributes:
         complete: False when some changes after that revision are no longer kept (the node
-            keeps a reference's latest 1,000 changes); ``note`` then says from where it starts.
+            keeps a reference's latest 10,000 changes); ``note`` then says from where it starts.
     """
 
     def __init__(self, changes: Sequence[AcknowledgedChange], note: str):
@@ -1198,7 +1198,8 @@ class SessionCommands:
         return self._session('', ('GET', 'REF', 'REVISION'), [reference],
                              lambda response: int(response.queried_objects[0]))
 
-    def changes_since(self, reference: str, revision: int = -1) -> ChangeHistory:
+    def changes_since(self, reference: str, revision: int = -1,
+                      client: Optional[str] = None) -> ChangeHistory:
         """A reference's acknowledged changes after a revision, oldest first (GET REF CHANGES).
 
         How a client whose answer never arrived (ArmorCoreUnavailableError, a time-out, a lost
@@ -1210,18 +1211,20 @@ class SessionCommands:
             except (ArmorCoreUnavailableError, ArmorServiceCallError):
                 if not any(change.includes('ADD OBJECTPROP IND', ['isIn', 'bob', 'kitchen'],
                                            armor.client_name)
-                           for change in armor.changes_since('map', before)):
+                           for change in armor.changes_since('map', before, armor.client_name)):
                     ...  # not applied: send it again
 
         Args:
             reference: the reference name.
             revision: the revision after which to list changes (-1: every kept change).
+            client: only the changes with a directive of this client (None: all).
 
         Returns:
             A ChangeHistory (a list of AcknowledgedChange); ``complete`` is False when older
             changes after ``revision`` are no longer kept.
         """
-        return self._session('', ('GET', 'REF', 'CHANGES'), [reference, str(revision)],
+        return self._session('', ('GET', 'REF', 'CHANGES'),
+                             [reference, str(revision), *([client] if client else [])],
                              _change_history)
 
     def log_to_screen(self, on: bool) -> None:
@@ -1280,13 +1283,13 @@ class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge):
         """
         return self.armor.revision(self.name)
 
-    def changes_since(self, revision: int = -1) -> Any:
+    def changes_since(self, revision: int = -1, client: Optional[str] = None) -> Any:
         """This reference's acknowledged changes after a revision (GET REF CHANGES).
 
         Returns:
             A ChangeHistory (an awaitable of it from AsyncReference); see Armor.changes_since.
         """
-        return self.armor.changes_since(self.name, revision)
+        return self.armor.changes_since(self.name, revision, client)
 
     def _execute(self, words: Words, args: Sequence[Any], parse: Parser) -> Any:
         return self.armor._then(self.armor.call(self.name, *words, args),

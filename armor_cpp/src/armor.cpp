@@ -186,10 +186,13 @@ std::uint64_t Armor::revision(const std::string & reference) const
 }
 
 std::vector<std::string> Armor::changes_since(
-  const std::string & reference, std::int64_t revision) const
+  const std::string & reference, std::int64_t revision, const std::string & client) const
 {
-  return execute("", contract::GET_REF_CHANGES, {reference, std::to_string(revision)})
-         .queried_objects;
+  std::vector<std::string> args{reference, std::to_string(revision)};
+  if (!client.empty()) {
+    args.push_back(client);
+  }
+  return execute("", contract::GET_REF_CHANGES, args).queried_objects;
 }
 
 void Armor::log_to_screen(bool on) const
@@ -440,9 +443,10 @@ std::optional<std::string> Reference::mounted_by() const {return armor_.mounted_
 
 std::uint64_t Reference::revision() const {return armor_.revision(name());}
 
-std::vector<std::string> Reference::changes_since(std::int64_t revision) const
+std::vector<std::string> Reference::changes_since(
+  std::int64_t revision, const std::string & client) const
 {
-  return armor_.changes_since(name(), revision);
+  return armor_.changes_since(name(), revision, client);
 }
 
 Mount Reference::mounted() const {return Mount(*this);}

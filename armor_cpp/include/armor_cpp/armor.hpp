@@ -143,8 +143,11 @@ public:
   std::uint64_t revision(const std::string & reference) const;
   // A reference's acknowledged changes after a revision, oldest first, one JSON object each:
   // {"revision": N, "directives": [{"client_name", "command", ..., "args"}]} (GET REF CHANGES).
-  // How a client whose answer was lost learns whether its change was applied; -1: all kept.
-  std::vector<std::string> changes_since(const std::string & reference, std::int64_t revision = -1) const;
+  // How a client whose answer was lost learns whether its change was applied; -1: all kept;
+  // a client name keeps only the changes with a directive of that client.
+  std::vector<std::string> changes_since(
+    const std::string & reference, std::int64_t revision = -1,
+    const std::string & client = "") const;
   // Turn the node's logging of directives to its screen on or off (LOG SCREEN ON/OFF).
   void log_to_screen(bool on) const;
   // Log directives to a file on the node's machine; empty stops it (LOG FILE ON/OFF).
@@ -267,7 +270,8 @@ public:
   // How many changes this reference has acknowledged (GET REF REVISION).
   std::uint64_t revision() const;
   // Its acknowledged changes after a revision (GET REF CHANGES); see Armor::changes_since.
-  std::vector<std::string> changes_since(std::int64_t revision = -1) const;
+  std::vector<std::string> changes_since(
+    std::int64_t revision = -1, const std::string & client = "") const;
   // Hold the mount until the returned guard is destroyed.
   Mount mounted() const;
   // A builder for changes sent together as one atomic list.

@@ -67,7 +67,7 @@ inline constexpr Command GET_REF_CLIENT{"GET", "REF", "CLIENT", Kind::Global, 0,
 // the revision: how many changes it has acknowledged
 inline constexpr Command GET_REF_REVISION{"GET", "REF", "REVISION", Kind::Global, 0, 1, false, false};
 // its latest acknowledged changes after a revision, one JSON object each
-inline constexpr Command GET_REF_CHANGES{"GET", "REF", "CHANGES", Kind::Global, 0, 2, false, false};
+inline constexpr Command GET_REF_CHANGES{"GET", "REF", "CHANGES", Kind::Global, 0, 3, false, false};
 // log directives on the node's screen
 inline constexpr Command LOG_SCREEN_ON{"LOG", "SCREEN", "ON", Kind::Global, 0, 0, false, false};
 // stop logging to the screen

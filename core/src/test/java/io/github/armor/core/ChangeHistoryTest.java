@@ -93,6 +93,11 @@ class ChangeHistoryTest {
                 described(all.get(1)));
         assertEquals(1, changes(core, "map", 1).size());
         assertEquals(List.of(), changes(core, "map", 2));
+        // Only the changes one client took part in.
+        List<String> bobs = ok(core, "c", "", "GET REF CHANGES", "map", "", "bob").queriedObjects();
+        assertEquals(1, bobs.size());
+        assertTrue(bobs.get(0).contains("robot4"), bobs.get(0));
+        assertEquals(List.of(), ok(core, "c", "", "GET REF CHANGES", "map", "1", "alice").queriedObjects());
         // No argument: the directive's own reference, every kept change.
         assertEquals(2, ok(core, "c", "map", "GET REF CHANGES").queriedObjects().size());
         assertEquals(List.of("2"), ok(core, "c", "map", "GET REF REVISION").queriedObjects());

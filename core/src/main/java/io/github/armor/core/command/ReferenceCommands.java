@@ -65,7 +65,7 @@ public final class ReferenceCommands implements CommandGroup {
         table.command("GET REF REVISION").optional("reference name")
                 .summary("the revision: how many changes it has acknowledged").global(c -> Response.ok(true,
                         List.of(Long.toString(named(c).revision()))));
-        table.command("GET REF CHANGES").optional("reference name", "since revision")
+        table.command("GET REF CHANGES").optional("reference name", "since revision", "client name")
                 .summary("its latest acknowledged changes after a revision, one JSON object each")
                 .global(ReferenceCommands::changes);
         for (String state : List.of("ON", "OFF")) {
@@ -123,7 +123,11 @@ public final class ReferenceCommands implements CommandGroup {
             }
         }
         ChangeHistory history = reference.changeHistory();
-        List<AcknowledgedChange> after = history.since(since);
+        String client = c.hasArg(2) ? c.arg(2) : "";
+        List<AcknowledgedChange> after = history.since(since).stream()
+                .filter(change -> client.isEmpty() || change.directives().stream()
+                        .anyMatch(d -> d.clientName().equals(client)))
+                .toList();
         // Revision 0 is the reference as made: its first change is revision 1.
         long wanted = Math.max(since + 1, 1);
         long keptFrom = history.oldestRevision() < 0 ? reference.revision() + 1 : history.oldestRevision();
