@@ -3,7 +3,7 @@
 
     python bench/suite.py [--scale full|smoke] [--report bench/REPORT.md]
 
-`make bench` runs it at full scale (about 50 minutes on 2 cores) and writes bench/REPORT.md.
+`make bench` runs it at full scale (about 15 minutes on 2 cores) and writes bench/REPORT.md.
 `--scale smoke` runs every benchmark on tiny sizes in a few minutes
 (tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set
 with the environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own

@@ -27,7 +27,7 @@ import org.semanticweb.owlapi.model.parameters.Imports;
  */
 public final class EntityResolver {
     // Names looked at on each side of an unknown name, in each of the two orders, for "did you mean".
-    private static final int NEIGHBOURS = 32;
+    private static final int NEIGHBOURS = 8;
     private static final Pattern PLAIN_NAME = Pattern.compile("[^\\s<>\"{}|^`\\\\]+");
     private static final Pattern ABSOLUTE_IRI = Pattern.compile("[A-Za-z][A-Za-z0-9+.-]*:[^\\s<>\"{}|^`\\\\]*");
 
