@@ -1196,7 +1196,8 @@ class SessionCommands:
         Read it before a change whose answer might be lost; see changes_since.
         """
         return self._session('', ('GET', 'REF', 'REVISION'), [reference],
-                             lambda response: int(response.queried_objects[0]))
+                             lambda response: int(response.queried_objects[0])
+                             if response.queried_objects else 0)
 
     def changes_since(self, reference: str, revision: int = -1,
                       client: Optional[str] = None) -> ChangeHistory:
