@@ -42,7 +42,7 @@ import threading
 import time
 from typing import Dict, Iterable, List, Optional, Tuple
 
-from harness import BenchNode, CoreSnapshot, latency_summary
+from harness import BenchNode, CoreSnapshot, latency_summary, stop_process
 
 ECHO_NODE = 'default_qos_echo'
 CLASS = 'Marker'
@@ -374,8 +374,7 @@ def run_echo_flood(namespace: str, directives: int, quiet_s: float) -> dict:
         received = int(counter.must(request('flooder', '', 'COUNT')).queried_objects[0])
         counter.close()
     finally:
-        server.terminate()
-        server.wait()
+        stop_process(server)
     answered = [s for s in answered_after if s is not None]
     return {'sent': directives, 'answered': len(answered), 'errors': 0,
             'requests_lost': directives - received, 'answers_lost': received - len(answered),

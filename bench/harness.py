@@ -38,6 +38,20 @@ def latency_summary(samples: Sequence[float]) -> Dict[str, float]:
             'p99_ms': percentile(samples, 0.99) * 1000, 'mean_ms': statistics.fmean(samples) * 1000}
 
 
+def stop_process(process: subprocess.Popen, grace_s: float = 10) -> None:
+    """Ends a helper process: SIGTERM, then SIGKILL if it is still there after grace_s.
+
+    An rclpy process does not always exit on SIGTERM; a benchmark waiting for it forever hung
+    the suite (the smoke run in make test was stopped by its 600 s limit).
+    """
+    process.terminate()
+    try:
+        process.wait(timeout=grace_s)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        process.wait()
+
+
 def script_scale_and_scratch(description: str):
     """What a benchmark run as a script starts from: its --smoke flag read, a scratch folder.
 

@@ -24,7 +24,7 @@ import tempfile
 import threading
 import time
 
-from harness import REPO, BenchNode, CoreSnapshot, Deadline, latency_summary
+from harness import REPO, BenchNode, CoreSnapshot, Deadline, latency_summary, stop_process
 
 COMMANDS = ('QUERY', 'ADD')
 
@@ -56,8 +56,7 @@ class EchoFloor:
         return future.result()
 
     def stop(self):
-        self.process.terminate()
-        self.process.wait()
+        stop_process(self.process)
 
 
 class CoreAlone:
