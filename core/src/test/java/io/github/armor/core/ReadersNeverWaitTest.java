@@ -97,6 +97,23 @@ class ReadersNeverWaitTest {
                 "an answer under the lock is the ordinary one, with no revision note");
     }
 
+    /** A client reads its own writes: the state a busy reference answers from is never older than them. */
+    @ParameterizedTest
+    @ValueSource(strings = {"HERMIT", "PELLET"})
+    void aClientThatChangedTheReferenceIsNeverAnsweredFromAStateBeforeItsChange(String reasoner) throws Exception {
+        assertTrue(run("map", "LOAD FILE", ROBOTICS, "", "false", reasoner, "false").success());
+        assertTrue(core.executeList(List.of(Directive.of("mover", "map", "ADD", "IND", "CLASS", "robot2", "Robot"),
+                Directive.of("mover", "map", "ADD", "IND", "CLASS", "robot3", "Robot"))).success());
+        CompletableFuture<Response> writer = CompletableFuture.supplyAsync(() -> run("map", "TEST MOVE SLOWLY",
+                "isIn", "robot1", "bedroom", "kitchen"));
+        assertTrue(writerInside.await(10, TimeUnit.SECONDS));
+        Response own = core.execute(Directive.of("mover", "map", "QUERY", "IND", "CLASS", "Robot"));
+        assertTrue(own.exitCode() == 211 || own.queriedObjects().containsAll(iris("robot2", "robot3")),
+                () -> own.exitCode() + " " + own.queriedObjects() + " " + own.errorDescription());
+        letWriterGo.countDown();
+        assertTrue(writer.get(10, TimeUnit.SECONDS).success());
+    }
+
     @ParameterizedTest
     @ValueSource(strings = {"true", "false"})
     void withoutAPublishedStateReadersWaitAsBefore(String bufferedReasoner) throws Exception {

@@ -31,7 +31,9 @@ public final class StateQueries {
     /** The answer from the published state, or empty when the directive must wait for the reference. */
     public static Optional<Response> answer(Directive directive, Reference reference, Rendering rendering) {
         Optional<Published> published = reference.publishedState();
-        if (published.isEmpty()) {
+        // A client reads its own writes: a state older than its last change is no answer for it.
+        if (published.isEmpty()
+                || published.get().revision() < reference.changeHistory().lastRevisionOf(directive.clientName())) {
             return Optional.empty();
         }
         InferredState state = published.get().state();

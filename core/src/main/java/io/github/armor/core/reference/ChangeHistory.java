@@ -5,7 +5,9 @@ import io.github.armor.core.api.AcknowledgedChange;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * A reference's latest acknowledged changes, so that a client whose answer never arrived (a
@@ -20,6 +22,8 @@ public final class ChangeHistory {
     public static final long MAX_TEXT = 8L << 20;
 
     private final ArrayDeque<AcknowledgedChange> changes = new ArrayDeque<>();
+    // Each client's last change, kept however old: a client must read its own writes.
+    private final Map<String, Long> lastRevisionByClient = new HashMap<>();
     private long text;
 
     /** Adds a change newer than every kept one (an older or repeated revision is ignored). */
@@ -28,6 +32,7 @@ public final class ChangeHistory {
             return;
         }
         changes.addLast(change);
+        change.directives().forEach(d -> lastRevisionByClient.put(d.clientName(), change.revision()));
         text += change.textLength();
         while (changes.size() > MAX_CHANGES || (text > MAX_TEXT && changes.size() > 1)) {
             text -= changes.removeFirst().textLength();
@@ -47,6 +52,11 @@ public final class ChangeHistory {
             }
         }
         return after;
+    }
+
+    /** The revision of the last change {@code client} took part in, or -1 when it made none. */
+    public synchronized long lastRevisionOf(String client) {
+        return lastRevisionByClient.getOrDefault(client, -1L);
     }
 
     /** The revision of the oldest kept change, or -1 when none is kept. */
