@@ -95,9 +95,10 @@ class CoreAlone:
         self.core.stop()
 
 
-CORE_ALONE_CALLS = {
-    'QUERY': lambda core, i: core.call('robotics', 'QUERY IND CLASS', 'OccupiedRoom'),
-    'ADD': lambda core, i: core.call('robotics', 'ADD IND CLASS', f'probe{i}', 'Robot'),
+# Each command's i-th directive (words, then arguments), the same on every path.
+DIRECTIVES = {
+    'QUERY': lambda i: ('QUERY IND CLASS', 'OccupiedRoom'),
+    'ADD': lambda i: ('ADD IND CLASS', f'probe{i}', 'Robot'),
 }
 
 
@@ -116,9 +117,11 @@ def _core_alone_worker(command: str, calls: int, scratch: pathlib.Path, jar: str
     try:
         samples = []
         for i in range(-min(50, calls), calls):
-            seconds, answer = _timed(lambda: CORE_ALONE_CALLS[command](core, i + calls))
+            directive = DIRECTIVES[command](i + calls)
+            seconds, answer = _timed(lambda: core.call('robotics', *directive))
             if not answer.success:
-                raise RuntimeError(f'{command} failed: {answer.exit_code} {answer.error_description}')
+                raise RuntimeError(f'{command} failed: {answer.exit_code} '
+                                   f'{answer.error_description}')
             if i >= 0:
                 samples.append(seconds)
         return latency_summary(samples)
@@ -149,12 +152,10 @@ def measure(calls: int, scratch: pathlib.Path, snapshot: CoreSnapshot, commands=
         if not loaded.success:
             raise RuntimeError(f'LOAD failed: {loaded.exit_code} {loaded.error_description}')
         paths = {
-            'QUERY': {'service': lambda i: node.call('robotics', 'QUERY IND CLASS',
-                                                     'OccupiedRoom')},
-            'ADD': {'service': lambda i: node.call('robotics', 'ADD IND CLASS', f'probe{i}',
-                                                   'Robot'),
+            'QUERY': {'service': lambda i: node.call('robotics', *DIRECTIVES['QUERY'](i))},
+            'ADD': {'service': lambda i: node.call('robotics', *DIRECTIVES['ADD'](i)),
                     'service_buffered_reasoner': lambda i: node.call(
-                        'robotics_buffered', 'ADD IND CLASS', f'probe{i}', 'Robot')},
+                        'robotics_buffered', *DIRECTIVES['ADD'](i))},
         }
         results = {}
         for command in commands:

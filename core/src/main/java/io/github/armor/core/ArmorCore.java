@@ -366,16 +366,15 @@ public final class ArmorCore implements AutoCloseable {
         try {
             Response response = spec.handler().run(context);
             if (list == null && makesRevision(spec)) {
-                long revision = reference.revision() + 1;
+                AcknowledgedChange change = new AcknowledgedChange(reference.revision() + 1, List.of(directive));
                 if (state != null) {
-                    state.record(reference, revision, List.of(directive));
+                    state.record(reference, change);
                 }
-                reference.setRevision(revision);
-                reference.changeHistory().add(new AcknowledgedChange(revision, List.of(directive)));
+                reference.acknowledge(change);
                 if (state != null) {
                     state.checkpointIfDue(reference);
                 }
-                events.publish(ChangeEvent.now(reference.name(), revision, List.of(directive),
+                events.publish(ChangeEvent.now(reference.name(), change.revision(), change.directives(),
                         reference.isConsistent()));
             }
             return response;
@@ -497,14 +496,14 @@ public final class ArmorCore implements AutoCloseable {
          * list is one revision of each reference it changed.
          */
         void journal() {
-            toJournal.forEach((reference, directives) -> {
-                if (ArmorCore.this.state != null) {
-                    ArmorCore.this.state.record(reference, reference.revision() + 1, directives);
-                }
-            });
-            toJournal.forEach((reference, directives) -> {
-                reference.setRevision(reference.revision() + 1);
-                reference.changeHistory().add(new AcknowledgedChange(reference.revision(), directives));
+            Map<Reference, AcknowledgedChange> changes = new java.util.LinkedHashMap<>();
+            toJournal.forEach((reference, directives) -> changes.put(reference,
+                    new AcknowledgedChange(reference.revision() + 1, directives)));
+            if (ArmorCore.this.state != null) {
+                changes.forEach(ArmorCore.this.state::record);
+            }
+            changes.forEach((reference, change) -> {
+                reference.acknowledge(change);
                 if (ArmorCore.this.state != null) {
                     ArmorCore.this.state.checkpointIfDue(reference);
                 }

@@ -7,8 +7,6 @@ import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import io.github.armor.core.api.AcknowledgedChange;
 import io.github.armor.core.api.CoreConfig.Durability;
-import io.github.armor.core.api.Directive;
-import io.github.armor.core.api.DirectiveJson;
 import io.github.armor.core.reference.Reference;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -151,9 +149,8 @@ final class ReferenceStore {
      * Appends one record: the directives of one acknowledgement, replayed together or not at all,
      * and the reference's revision once they are applied.
      */
-    synchronized void record(long revision, List<Directive> directives) throws IOException {
-        JsonObject record = new AcknowledgedChange(revision, directives).toJson();
-        journal.append(record.toString().getBytes(StandardCharsets.UTF_8));
+    synchronized void record(AcknowledgedChange change) throws IOException {
+        journal.append(change.toJson().toString().getBytes(StandardCharsets.UTF_8));
         recordsSinceCheckpoint++;
     }
 

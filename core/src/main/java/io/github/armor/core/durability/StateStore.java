@@ -4,7 +4,6 @@ package io.github.armor.core.durability;
 import io.github.armor.core.api.AcknowledgedChange;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.CoreConfig.Durability;
-import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.Reference;
@@ -58,8 +57,6 @@ public final class StateStore {
     public record Restorable(String name, OWLOntology ontology, Reference.Settings settings, String mountedBy,
                              List<AcknowledgedChange> records, long revision, ReferenceStore store,
                              List<AcknowledgedChange> history) {}
-
-    /** One journal record: the directives of one acknowledged change and the revision they made. */
 
     /**
      * Reads every reference found on disk (or, when restoring is off, deletes them for a clean
@@ -168,13 +165,13 @@ public final class StateStore {
      * Records acknowledged directives with the revision they give the reference; on failure the
      * caller must undo them (nothing was acknowledged).
      */
-    public void record(Reference reference, long revision, List<Directive> directives) {
+    public void record(Reference reference, AcknowledgedChange change) {
         ReferenceStore store = stores.get(reference.name());
         if (store == null) {
             throw new ArmorException(ExitCode.INTERNAL_ERROR, "reference '" + reference.name() + "' has no journal");
         }
         try {
-            store.record(revision, directives);
+            store.record(change);
         } catch (IOException e) {
             throw new ArmorException(ExitCode.LOAD_FAILED, "cannot write the journal of '" + reference.name()
                     + "', change undone: " + e.getMessage(), e);

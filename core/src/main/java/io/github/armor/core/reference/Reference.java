@@ -1,6 +1,7 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.reference;
 
+import io.github.armor.core.api.AcknowledgedChange;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.reasoning.ModularReasoner;
@@ -254,7 +255,13 @@ public final class Reference {
         return changeHistory;
     }
 
-    /** Sets the revision: after an acknowledged change, or to the journal's at a restore. */
+    /** An acknowledged change: the revision it made, kept in the change history. */
+    public void acknowledge(AcknowledgedChange change) {
+        this.revision = change.revision();
+        changeHistory.add(change);
+    }
+
+    /** Sets the revision to the journal's at a restore. */
     public void setRevision(long revision) {
         this.revision = revision;
     }
