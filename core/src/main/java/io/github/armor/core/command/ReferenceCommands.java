@@ -168,9 +168,9 @@ public final class ReferenceCommands implements CommandGroup {
         if (mount) {
             takeMount(reference, client);
         }
-        String coverage = reference.coverage().loadReport();
-        if (!coverage.isEmpty()) {
-            warnings.append(warnings.isEmpty() ? "" : "; ").append(coverage);
+        String statement = reference.loadStatement().text();
+        if (!statement.isEmpty()) {
+            warnings.append(warnings.isEmpty() ? "" : "; ").append(statement);
         }
         return Response.ok(reference.isConsistent(), List.of()).withDescription(warnings.toString());
     }

@@ -6,6 +6,7 @@ import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.reasoning.ModularReasoner;
 import io.github.armor.core.reasoning.PublishedStates;
+import io.github.armor.core.reasoning.ReasoningPlan;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -222,6 +223,26 @@ public final class Reference {
 
     public boolean isConsistent() {
         return consistent;
+    }
+
+    /** How this reference's ontology is reasoned on: in modules, or whole and why. Safe from any thread. */
+    public ReasoningPlan reasoningPlan() {
+        OWLReasoner current = reasoner;
+        if (current instanceof ModularReasoner modular) {
+            return modular.plan();
+        }
+        if (bufferedReasoner) {
+            return ReasoningPlan.whole("buffered reasoner (brought up to date at REASON)");
+        }
+        return current == null ? ReasoningPlan.NOT_YET : ReasoningPlan.whole(reasonerName
+                + " is not one of the reasoners ARMOR reasons in modules with (HERMIT, PELLET, JFACT)");
+    }
+
+    /** What LOAD says about the reference beyond success: what the reasoner will not use, and whole-ontology reasoning. */
+    public LoadStatement loadStatement() {
+        ReasoningPlan plan = reasoningPlan();
+        return new LoadStatement().with("coverage", coverage.loadReport())
+                .with("reasoning", plan.whole() && !bufferedReasoner ? "reasoning " + plan.describe() : "");
     }
 
     /**
