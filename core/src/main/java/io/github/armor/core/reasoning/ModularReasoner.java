@@ -133,6 +133,12 @@ public final class ModularReasoner implements OWLReasoner {
         return lastUpdate;
     }
 
+    /** The properties whose assertions tie modules (for tests); empty when not modular. */
+    Set<org.semanticweb.owlapi.model.OWLObjectProperty> linkingProperties() {
+        AboxLinks now = links;
+        return now == null ? Set.of() : now.linking();
+    }
+
     /** How many modules took an earlier module's result since the last schema change (for tests). */
     long reusedShapes() {
         ModuleRealiser current = realiser;
@@ -250,9 +256,7 @@ public final class ModularReasoner implements OWLReasoner {
         }
         realiser.prepare();
         Repartition repartition = modules.repartition(touched);
-        if (nominalIndependence != null && !coveredByNominalCheck(repartition.made())) {
-            mode = Mode.NOT_REASONED;
-            reasonOnModules();
+        if (nominalIndependence != null && !coveredByNominalCheck(repartition.made()) && !nominalsIndependent()) {
             return;
         }
         InferredState.Editor next = state.edit();
@@ -400,8 +404,10 @@ public final class ModularReasoner implements OWLReasoner {
             wholeBehind = false;
             wholeMissedRemoval = false;
         } else if (wholeBehind) {
-            // Openllet and JFact keep inferences of removed axioms; HermiT refuses some additions.
-            boolean rebuilt = wholeMissedRemoval;
+            // Openllet and JFact keep inferences of removed axioms; HermiT refuses some additions; with
+            // nominals, JFact and HermiT were seen to keep a class hierarchy that added assertions change.
+            AboxLinks now = links;
+            boolean rebuilt = wholeMissedRemoval || now != null && !now.nominals().isEmpty();
             if (!rebuilt) {
                 try {
                     whole.flush();
@@ -438,7 +444,8 @@ public final class ModularReasoner implements OWLReasoner {
     @Override
     public NodeSet<OWLClass> getTypes(OWLNamedIndividual individual, boolean direct) {
         InferredState now = consistentState();
-        if (now != null && now.knows(individual)) {
+        // Direct types need the whole ontology's class hierarchy: the hub's assertions can add to it.
+        if (now != null && now.knows(individual) && !(direct && !links.nominals().isEmpty())) {
             return now.types(individual).orElseThrow(InconsistentOntologyException::new).nodeSet(direct);
         }
         return whole().getTypes(individual, direct);

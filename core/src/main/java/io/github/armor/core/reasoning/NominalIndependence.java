@@ -7,16 +7,28 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import org.semanticweb.owlapi.change.AddAxiomData;
-import org.semanticweb.owlapi.change.AxiomChangeData;
 import org.semanticweb.owlapi.model.OWLAxiom;
 import org.semanticweb.owlapi.model.OWLClassExpression;
 import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLDataPropertyDomainAxiom;
+import org.semanticweb.owlapi.model.OWLDisjointClassesAxiom;
+import org.semanticweb.owlapi.model.OWLDisjointUnionAxiom;
 import org.semanticweb.owlapi.model.OWLEntity;
+import org.semanticweb.owlapi.model.OWLEquivalentClassesAxiom;
+import org.semanticweb.owlapi.model.OWLObjectAllValuesFrom;
+import org.semanticweb.owlapi.model.OWLObjectComplementOf;
+import org.semanticweb.owlapi.model.OWLObjectExactCardinality;
 import org.semanticweb.owlapi.model.OWLObjectHasValue;
+import org.semanticweb.owlapi.model.OWLObjectIntersectionOf;
+import org.semanticweb.owlapi.model.OWLObjectMaxCardinality;
+import org.semanticweb.owlapi.model.OWLObjectMinCardinality;
 import org.semanticweb.owlapi.model.OWLObjectOneOf;
+import org.semanticweb.owlapi.model.OWLObjectPropertyDomainAxiom;
+import org.semanticweb.owlapi.model.OWLObjectPropertyRangeAxiom;
+import org.semanticweb.owlapi.model.OWLObjectSomeValuesFrom;
+import org.semanticweb.owlapi.model.OWLObjectUnionOf;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
-import org.semanticweb.owlapi.util.OWLObjectTransformer;
+import org.semanticweb.owlapi.model.OWLSubClassOfAxiom;
 import uk.ac.manchester.cs.owlapi.modularity.ModuleType;
 import uk.ac.manchester.cs.owlapi.modularity.SyntacticLocalityModuleExtractor;
 
@@ -41,23 +53,13 @@ final class NominalIndependence {
      * @param signature the classes and properties of the assertions of the modules outside the hub
      */
     static NominalIndependence check(OWLOntologyManager manager, List<OWLAxiom> schema, Set<OWLEntity> signature) {
-        OWLDataFactory factory = manager.getOWLDataFactory();
-        OWLObjectTransformer<OWLClassExpression> empty = new OWLObjectTransformer<>(
-                object -> object instanceof OWLObjectOneOf || object instanceof OWLObjectHasValue,
-                expression -> expression instanceof OWLObjectHasValue hasValue
-                        ? factory.getOWLObjectSomeValuesFrom(hasValue.getProperty(), factory.getOWLNothing())
-                        : factory.getOWLNothing(),
-                factory, OWLClassExpression.class);
+        Emptied emptied = new Emptied(manager.getOWLDataFactory());
         Map<OWLAxiom, OWLAxiom> original = new HashMap<>();
         Set<OWLAxiom> rewritten = new HashSet<>();
         for (OWLAxiom axiom : schema) {
             OWLAxiom read = axiom;
             if (axiom.individualsInSignature().findAny().isPresent()) {
-                for (AxiomChangeData change : empty.change(axiom)) {
-                    if (change instanceof AddAxiomData add) {
-                        read = add.getAxiom();
-                    }
-                }
+                read = emptied.axiom(axiom);
                 original.put(read, axiom);
             }
             rewritten.add(read);
@@ -78,6 +80,71 @@ final class NominalIndependence {
     /** The axiom with a nominal that the ABox's signature reaches, if one does. */
     Optional<OWLAxiom> dependent() {
         return Optional.ofNullable(dependent);
+    }
+
+    /** Axioms and class expressions with every nominal read as ⊥: {a, b} is ⊥, P value a is ∃P.⊥. */
+    private record Emptied(OWLDataFactory factory) {
+        OWLAxiom axiom(OWLAxiom axiom) {
+            if (axiom instanceof OWLSubClassOfAxiom sub) {
+                return factory.getOWLSubClassOfAxiom(of(sub.getSubClass()), of(sub.getSuperClass()));
+            }
+            if (axiom instanceof OWLEquivalentClassesAxiom equivalent) {
+                return factory.getOWLEquivalentClassesAxiom(equivalent.classExpressions().map(this::of).toList());
+            }
+            if (axiom instanceof OWLDisjointClassesAxiom disjoint) {
+                return factory.getOWLDisjointClassesAxiom(disjoint.classExpressions().map(this::of).toList());
+            }
+            if (axiom instanceof OWLDisjointUnionAxiom union) {
+                return factory.getOWLDisjointUnionAxiom(union.getOWLClass(),
+                        union.classExpressions().map(this::of).toList());
+            }
+            if (axiom instanceof OWLObjectPropertyDomainAxiom domain) {
+                return factory.getOWLObjectPropertyDomainAxiom(domain.getProperty(), of(domain.getDomain()));
+            }
+            if (axiom instanceof OWLObjectPropertyRangeAxiom range) {
+                return factory.getOWLObjectPropertyRangeAxiom(range.getProperty(), of(range.getRange()));
+            }
+            if (axiom instanceof OWLDataPropertyDomainAxiom domain) {
+                return factory.getOWLDataPropertyDomainAxiom(domain.getProperty(), of(domain.getDomain()));
+            }
+            // Any other axiom naming an individual is left as it is: never local, so never independent.
+            return axiom;
+        }
+
+        OWLClassExpression of(OWLClassExpression expression) {
+            if (expression instanceof OWLObjectOneOf) {
+                return factory.getOWLNothing();
+            }
+            if (expression instanceof OWLObjectHasValue hasValue) {
+                return factory.getOWLObjectSomeValuesFrom(hasValue.getProperty(), factory.getOWLNothing());
+            }
+            if (expression instanceof OWLObjectIntersectionOf and) {
+                return factory.getOWLObjectIntersectionOf(and.operands().map(this::of));
+            }
+            if (expression instanceof OWLObjectUnionOf or) {
+                return factory.getOWLObjectUnionOf(or.operands().map(this::of));
+            }
+            if (expression instanceof OWLObjectComplementOf not) {
+                return factory.getOWLObjectComplementOf(of(not.getOperand()));
+            }
+            if (expression instanceof OWLObjectSomeValuesFrom some) {
+                return factory.getOWLObjectSomeValuesFrom(some.getProperty(), of(some.getFiller()));
+            }
+            if (expression instanceof OWLObjectAllValuesFrom all) {
+                return factory.getOWLObjectAllValuesFrom(all.getProperty(), of(all.getFiller()));
+            }
+            if (expression instanceof OWLObjectMinCardinality min) {
+                return factory.getOWLObjectMinCardinality(min.getCardinality(), min.getProperty(), of(min.getFiller()));
+            }
+            if (expression instanceof OWLObjectMaxCardinality max) {
+                return factory.getOWLObjectMaxCardinality(max.getCardinality(), max.getProperty(), of(max.getFiller()));
+            }
+            if (expression instanceof OWLObjectExactCardinality exact) {
+                return factory.getOWLObjectExactCardinality(exact.getCardinality(), exact.getProperty(),
+                        of(exact.getFiller()));
+            }
+            return expression;
+        }
     }
 
     /** Whether an assertion with this symbol keeps the answer (else the check must run again). */

@@ -71,6 +71,7 @@ public final class Reference {
     private boolean removedSinceSync;
     private boolean consistent = true;
     private String mountedBy = "";
+    private ArmorException loadTimeout;
     private Transaction transaction;
     // When the reasoner was last brought up to date and how long it took (the web view shows them).
     private volatile long lastReasoningEpochMs;
@@ -115,10 +116,24 @@ public final class Reference {
                 return null;
             });
             published.offer(reasoner, revision);
+        } catch (ArmorException e) {
+            if (e.exitCode() != ExitCode.TIMEOUT) {
+                coverage.close();
+                throw e;
+            }
+            // A reasoner that runs away at LOAD is stopped; the reference stays, its reasoner made afresh when asked.
+            loadTimeout = e;
         } catch (RuntimeException e) {
             coverage.close();
             throw e;
         }
+    }
+
+    /** The time limit the first reasoning ran into at LOAD, once (then empty). */
+    public Optional<ArmorException> takeLoadTimeout() {
+        Optional<ArmorException> taken = Optional.ofNullable(loadTimeout);
+        loadTimeout = null;
+        return taken;
     }
 
     /**
