@@ -291,6 +291,11 @@ public final class ModularReasoner implements OWLReasoner {
         if (links.nominals().isEmpty()) {
             return true;
         }
+        if (underlyingName.equalsIgnoreCase("JFACT")) {
+            // Seen in the equivalence test: JFact left the schema's individuals out of a module's answers.
+            reasonOnWhole("individuals named in the schema (JFact answers them differently in modules)");
+            return false;
+        }
         NominalIndependence found = NominalIndependence.check(ontology.getOWLOntologyManager(),
                 logicalSchemaAxioms().toList(), modules.signatureOutsideHub());
         if (found.dependent().isPresent()) {

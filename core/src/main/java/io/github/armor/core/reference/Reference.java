@@ -253,11 +253,15 @@ public final class Reference {
                 + " is not one of the reasoners ARMOR reasons in modules with (HERMIT, PELLET, JFACT)");
     }
 
-    /** What LOAD says about the reference beyond success: what the reasoner will not use, and whole-ontology reasoning. */
+    /**
+     * What LOAD says about the reference beyond success: what the reasoner will not use, and why
+     * an ontology that would be reasoned on in modules is reasoned on whole.
+     */
     public LoadStatement loadStatement() {
         ReasoningPlan plan = reasoningPlan();
         return new LoadStatement().with("coverage", coverage.loadReport())
-                .with("reasoning", plan.whole() && !bufferedReasoner ? "reasoning " + plan.describe() : "");
+                .with("reasoning", reasoner instanceof ModularReasoner && plan.whole() ? "reasoning " + plan.describe()
+                        : "");
     }
 
     /**
