@@ -18,7 +18,8 @@ from conftest import release_domain, reserve_domain
 REPO = pathlib.Path(__file__).resolve().parents[2]
 SECTIONS = ('## Summary', '## Machine and versions', '## 1. Transport overhead',
             '## 2. Batch throughput', '## 3. Reasoning under updates', '## 4. Memory',
-            '## 5. Profile', '## 6. SPARQL on LUBM', '## 7. Reasoning at robot speed (issue 15)')
+            '## 5. Profile', '## 6. SPARQL on LUBM', '## 7. Reasoning at robot speed (issue 15)',
+            '## 9. The ontologies robots really use (issue 28)')
 FIGURE = re.compile(r'\|\s*[\d,]+(\.\d+)?\s*(ms|s|/s|MiB|%|x)?\s*\|')
 
 
@@ -51,6 +52,11 @@ def test_smoke_run_writes_every_section_with_figures(tmp_path):
                       '6. first query after a one-fact change'):
         assert benchmark in summary, f'{benchmark} missing from the summary'
     assert '**Slowest part of the service:**' in summary
+    shapes = _sections(report)['## 9. The ontologies robots really use (issue 28)']
+    assert 'wrong**' not in shapes, f'a wrong answer in the real shapes:\n{shapes}'
+    for shape in ('(a) robotics', '(b) part-of map', '(d) part-of map, functional, hasValue'):
+        assert any(line.startswith(f'| {shape} |') and '| yes |' in line
+                   for line in shapes.splitlines()), f'{shape} has no checked cycles:\n{shapes}'
     assert '**Default for the robot\'s cycle:**' in summary
 
 
