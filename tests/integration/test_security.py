@@ -13,12 +13,14 @@ import concurrent.futures
 import os
 import pathlib
 import socket
+import sys
 import threading
 import time
 import zipfile
 
 from armor_client import ArmorTransport, directive
-from conftest import TEST_ONTOLOGIES, start_node
+from armor_service.launch import ArmorNodeProcess
+from conftest import REPO, TEST_ONTOLOGIES, start_node
 import pytest
 from test_contract_support import answer, failure, succeeded, unique_name
 from test_contract_support import load  # noqa: F401 (fixture)
@@ -462,3 +464,198 @@ def test_a_file_that_is_no_ontology_says_so_and_which_syntaxes_were_tried(call, 
         assert syntax in description, description
     for internal in ('HDT', 'RioParserImpl', 'org.eclipse', 'Exception'):
         assert internal not in description, description
+
+
+# --- issue 27: what a client may write, on a node started as `make run` starts it --------------
+#
+# `exposed`: default parameters (no allowed_dirs, write_dirs or state_dir given), the checkout as
+# its working directory, as `make run`, but a throwaway home: every attack below aims at that
+# home's dotfiles, the checkout's code and virtual environment, and the node's own state.
+
+EXPOSED = '/exposed'
+ROBOTICS_FILE = REPO / 'ontologies' / 'robotics.owl'
+ROBOTICS_MAPPING = REPO / 'examples' / 'pddl' / 'robotics-mapping.yaml'
+# A literal whose lines a shell or Python would run, were it written where they look.
+PAYLOAD = '\n$(touch {home}/pwned)\nimport sys\nssh-ed25519 AAAAC3NzaC1lZDI1NTE5AAAAIO attacker\n'
+
+
+@pytest.fixture(scope='module')
+def exposed(tmp_path_factory):
+    home = tmp_path_factory.mktemp('home')
+    environment = {**os.environ, 'HOME': str(home)}
+    environment.pop('XDG_DATA_HOME', None)
+    node = ArmorNodeProcess(tmp_path_factory.mktemp('exposed_log') / 'armor_service.log', [
+        '-p', f'preload_file:={ROBOTICS_FILE}', '-p', 'preload_reference:=robotics',
+        '-p', "state_dir:=''", '-r', f'__ns:={EXPOSED}'], cwd=REPO, env=environment)
+    transport = ArmorTransport(namespace=EXPOSED, service_wait_s=120.0)
+    node.home = home
+    node.transport = transport
+    try:
+        assert transport.call(directive('t', '', 'GET', 'ALL', 'REFS'), timeout_s=180).success, \
+            node.log()
+        yield node
+    finally:
+        transport.close()
+        node.stop()
+
+
+@pytest.fixture
+def exposed_call(exposed):
+    def send(reference, words, *args, client='attacker', timeout_s=120):
+        command, primary, secondary = (words.split() + ['', '', ''])[:3]
+        return exposed.transport.call(directive(client, reference, command, primary, secondary,
+                                                args), timeout_s=timeout_s)
+    return send
+
+
+@pytest.fixture
+def poisoned(exposed, exposed_call):
+    """A reference whose one literal holds a shell command, a Python line and an SSH key."""
+    name = unique_name('poisoned')
+    succeeded(exposed_call, name, 'LOAD FILE', str(ROBOTICS_FILE), '', 'false', 'PELLET', 'false')
+    succeeded(exposed_call, name, 'ADD DATAPROP IND', 'note', 'robot1', 'STRING',
+              PAYLOAD.format(home=exposed.home))
+    yield name
+    exposed_call(name, 'DROP')
+
+
+def state_dir_of(node) -> pathlib.Path:
+    """The default state directory of the exposed node (one per domain and node name)."""
+    return (node.home / '.local' / 'share' / 'armor_ros2' / f'domain{os.environ["ROS_DOMAIN_ID"]}'
+            / 'exposed__armor_service')
+
+
+def refused_write(call, reference, words, *args, target: pathlib.Path):
+    """A write that must be 213 and leave no file (nor a folder it would have made)."""
+    existed = target.exists()
+    before = target.read_bytes() if existed and target.is_file() else None
+    try:
+        response = failure(call, reference, words, *args, code=PATH_NOT_ALLOWED)
+    finally:
+        if not existed and target.is_file():
+            target.unlink()  # on a broken build: never leave a planted file behind
+    assert 'write_dirs' in response.error_description, response.error_description
+    if existed:
+        assert target.is_file() and target.read_bytes() == before
+    else:
+        assert not target.exists()
+    return response
+
+
+@pytest.mark.parametrize('words, relative, file_format', [
+    ('SAVE', '.bashrc', 'turtle'),
+    ('SAVE', '.profile', 'turtle'),
+    ('SAVE', '.ssh/authorized_keys', 'rdfxml'),
+    ('SAVE INFERENCE', '.bashrc', 'turtle'),
+    ('SAVE INFERENCE', '.config/autostart/armor.desktop', 'turtle'),
+])
+def test_save_into_the_users_dotfiles_is_213(exposed, exposed_call, poisoned, words, relative,
+                                             file_format):
+    target = exposed.home / relative
+    refused_write(exposed_call, poisoned, words, str(target), file_format, target=target)
+    assert not (exposed.home / '.ssh').exists() and not (exposed.home / '.config').exists()
+    assert not (exposed.home / 'pwned').exists()
+
+
+def test_save_pddl_problem_into_a_dotfile_is_213(exposed, exposed_call, poisoned):
+    target = exposed.home / '.bashrc'
+    refused_write(exposed_call, poisoned, 'SAVE PDDL PROBLEM', str(ROBOTICS_MAPPING), str(target),
+                  target=target)
+
+
+def test_log_file_on_a_dotfile_is_213(exposed, exposed_call):
+    target = exposed.home / '.bashrc'
+    refused_write(exposed_call, '', 'LOG FILE ON', str(target), target=target)
+
+
+def code_and_state_targets(node) -> dict:
+    venv = pathlib.Path(sys.prefix)
+    site_packages = next(venv.glob('lib/python3*/site-packages'))
+    plugin_dir = pathlib.Path(os.environ['ARMOR_PLUGIN_DIRS'].split(os.pathsep)[0])
+    return {
+        'a .pth file in the virtual environment': site_packages / f'{unique_name("armor")}.pth',
+        'a module of the checkout': REPO / 'armor_service' / 'armor_service' / 'planted.py',
+        'the core installation': pathlib.Path(os.environ['ARMOR_CORE_JAR']).parent / 'planted.owl',
+        'a plugin directory': plugin_dir / 'planted.owl',
+        'the home directory itself': node.home / 'planted.owl',
+        'the working directory itself': REPO / 'planted.owl',
+        'the temporary directory as a whole': pathlib.Path('/tmp') / f'{unique_name("planted")}.owl',
+        'a new folder in the home directory': node.home / unique_name('made') / 'planted.owl',
+        'the state directory': state_dir_of(node) / 'planted.owl',
+    }
+
+
+@pytest.mark.parametrize('what', ['a .pth file in the virtual environment', 'a module of the checkout',
+                                  'the core installation', 'a plugin directory',
+                                  'the home directory itself', 'the working directory itself',
+                                  'the temporary directory as a whole',
+                                  'a new folder in the home directory', 'the state directory'])
+def test_code_the_installation_and_shared_folders_are_never_written(exposed, exposed_call,
+                                                                     poisoned, what):
+    target = code_and_state_targets(exposed)[what]
+    refused_write(exposed_call, poisoned, 'SAVE', str(target), 'turtle', target=target)
+    refused_write(exposed_call, '', 'LOG FILE ON', str(target), target=target)
+    if what == 'a new folder in the home directory':
+        made = target.parent.exists()
+        if made:
+            target.parent.rmdir()
+        assert not made, 'SAVE made a folder outside the write folders'
+
+
+def test_the_state_directory_is_neither_read_nor_written(exposed, exposed_call):
+    state = state_dir_of(exposed)
+    meta = next(state.rglob('meta.json'))
+    checkpoint = next(path for path in state.rglob('*') if path.is_file()
+                      and path.suffix in ('.ofn', '.owl'))
+    refused_write(exposed_call, 'robotics', 'SAVE', str(meta), 'turtle', target=meta)
+    refused_write(exposed_call, 'robotics', 'SAVE', str(checkpoint), target=checkpoint)
+    failure(exposed_call, unique_name('stolen'), 'LOAD FILE', str(checkpoint), '', 'false',
+            'HERMIT', 'false', code=PATH_NOT_ALLOWED)
+    failure(exposed_call, 'robotics', 'QUERY PDDL PROBLEM', str(meta), code=PATH_NOT_ALLOWED)
+
+
+def test_symbolic_links_in_the_write_folder_lead_nowhere_else(exposed, exposed_call, poisoned):
+    folder = exposed.home / 'armor_files'
+    succeeded(exposed_call, poisoned, 'SAVE', str(folder / 'first.owl'))
+    links = {
+        folder / 'to_bashrc': exposed.home / '.bashrc',
+        folder / 'to_home': exposed.home,
+        folder / 'to_code': REPO / 'armor_service',
+    }
+    for link, target in links.items():
+        os.symlink(target, link)
+    try:
+        refused_write(exposed_call, poisoned, 'SAVE', str(folder / 'to_bashrc'),
+                      target=exposed.home / '.bashrc')
+        refused_write(exposed_call, poisoned, 'SAVE', str(folder / 'to_home' / 'x.owl'),
+                      target=exposed.home / 'x.owl')
+        refused_write(exposed_call, poisoned, 'SAVE', str(folder / 'to_code' / 'planted.py'),
+                      target=REPO / 'armor_service' / 'planted.py')
+    finally:
+        for link in links:
+            link.unlink()
+
+
+def test_the_armor_folder_is_private_and_takes_the_documented_writes(exposed, exposed_call,
+                                                                      poisoned):
+    folder = exposed.home / 'armor_files'
+    succeeded(exposed_call, poisoned, 'SAVE', str(folder / 'maps' / 'today' / 'robotics.ttl'),
+              'turtle')
+    assert (folder / 'maps' / 'today' / 'robotics.ttl').read_text().startswith('@')
+    assert folder.stat().st_mode & 0o777 == 0o700
+
+
+def test_a_log_line_is_one_line_whatever_the_directive_holds(exposed, exposed_call):
+    log = exposed.home / 'armor_files' / f'{unique_name("directives")}.log'
+    succeeded(exposed_call, '', 'LOG FILE ON', str(log))
+    try:
+        # Refused (no such reference), and logged all the same.
+        exposed_call('nowhere', 'ADD IND CLASS', 'x\n$(touch /tmp/pwned)\r\x1b[2K', 'Robot')
+        exposed_call('nowhere', 'QUERY IND CLASS', 'Robot', client='after\nclient')
+    finally:
+        succeeded(exposed_call, '', 'LOG FILE OFF')
+    lines = log.read_text().splitlines()
+    # LOG FILE ON and the two directives, one line each (LOG FILE OFF closed the file first).
+    assert len(lines) == 3 and all(' -> ' in line for line in lines), lines
+    assert '$(touch /tmp/pwned)' in lines[1] and '\\n' in lines[1] and '\x1b' not in lines[1]
+    assert '[after\\nclient]' in lines[2], lines[2]
