@@ -10,15 +10,22 @@ limit and the lenient import rule need a node of their own (`guarded`, in its ow
 """
 
 import concurrent.futures
+import http.server
+import json
 import os
 import pathlib
+import shutil
 import socket
+import subprocess
 import sys
 import threading
 import time
 import zipfile
 
 from armor_client import ArmorTransport, directive
+from armor_contract.events import ANSWER_QOS, SUBSCRIBE_SERVICE, UNSUBSCRIBE_SERVICE
+from armor_msgs.msg import ArmorAnswer
+from armor_msgs.srv import ArmorSubscribe, ArmorUnsubscribe
 from armor_service.launch import ArmorNodeProcess
 from conftest import REPO, TEST_ONTOLOGIES, start_node
 import pytest
@@ -659,3 +666,339 @@ def test_a_log_line_is_one_line_whatever_the_directive_holds(exposed, exposed_ca
     assert len(lines) == 3 and all(' -> ' in line for line in lines), lines
     assert '$(touch /tmp/pwned)' in lines[1] and '\\n' in lines[1] and '\x1b' not in lines[1]
     assert '[after\\nclient]' in lines[2], lines[2]
+
+
+# --- issue 27.5: limits consistent from the core to the node ----------------------------------
+
+FRAME_BYTES = 256 * MiB  # the node-core frame limit (armor_service/wire.py, CoreServer.java)
+
+
+def test_a_list_whose_answers_outgrow_a_frame_is_221_and_the_core_stays(call, armor, armor_node,
+                                                                        load):
+    reference = load()
+    succeeded(call, reference, 'ADD DATAPROP IND', 'note', 'robot1', 'STRING', 'x' * 1_000_000)
+    # 30 rows of a 1 MB literal: each answer stays under its own 32 MiB limit...
+    rows = ' '.join(str(i) for i in range(30))
+    query = ('SELECT ?v ?n WHERE { ?s <http://www.example.org/robotics#note> ?v '
+             f'VALUES ?n {{ {rows} }} }}')
+    single = succeeded(call, reference, 'QUERY SPARQL', query)
+    one_answer = sum(len(row) for row in single.queried_objects)
+    assert 30_000_000 < one_answer < 32 * MiB
+    # ... and ten of them in one list come to more than a frame carries.
+    count = FRAME_BYTES // one_answer + 2
+    core = armor_node.core_pid()
+    result = armor.call_list([directive('test', reference, 'QUERY', 'SPARQL', '', [query])] * count,
+                             timeout_s=600)
+    codes = {r.exit_code for r in result.armor_responses}
+    assert not result.success and codes == {TOO_LARGE}, codes
+    assert any(f'{FRAME_BYTES:,}' in r.error_description for r in result.armor_responses), \
+        result.armor_responses[0].error_description
+    assert armor_node.core_pid() == core, 'the node dropped the core'
+    assert answer(call, reference, 'QUERY IND CLASS', 'Robot') == [
+        '<http://www.example.org/robotics#robot1>']
+
+
+# --- issue 27.9: what one client may hold -----------------------------------------------------
+
+CLIENT_LIMIT = 225
+# The defaults of subscriptions_per_client and references_per_client (README's parameter table).
+SUBSCRIPTIONS_PER_CLIENT = REFERENCES_PER_CLIENT = 100
+
+
+class Subscriptions:
+    """armor_subscribe / armor_unsubscribe with plain rclpy, keeping each answer topic read."""
+
+    def __init__(self, node):
+        self._node = node
+        self._subscribe = node.create_client(ArmorSubscribe, SUBSCRIBE_SERVICE)
+        self._unsubscribe = node.create_client(ArmorUnsubscribe, UNSUBSCRIBE_SERVICE)
+        assert self._subscribe.wait_for_service(timeout_sec=60)
+        self.live = []
+        self._readers = []
+
+    @staticmethod
+    def _call(client, request, timeout_s=120.0):
+        done = threading.Event()
+        future = client.call_async(request)
+        future.add_done_callback(lambda _: done.set())
+        assert done.wait(timeout_s), f'no answer from {client.srv_name}'
+        return future.result()
+
+    def subscribe(self, client, reference, *words):
+        command, primary, secondary, *args = words
+        response = self._call(self._subscribe, ArmorSubscribe.Request(armor_request=directive(
+            client, reference, command, primary, secondary, args)))
+        if response.success:
+            self.live.append(response.subscription_id)
+            # A topic with a reader keeps its subscription alive (subscription_idle_s).
+            self._readers.append(self._node.create_subscription(
+                ArmorAnswer, response.topic, lambda message: None, ANSWER_QOS))
+        return response
+
+    def close(self):
+        for subscription_id in self.live:
+            self._call(self._unsubscribe, ArmorUnsubscribe.Request(subscription_id=subscription_id))
+        for reader in self._readers:
+            self._node.destroy_subscription(reader)
+
+
+def test_one_client_holds_at_most_its_share_of_subscriptions(armor, load):
+    reference = load()
+    subscriptions = Subscriptions(armor.node)
+    try:
+        for _ in range(SUBSCRIPTIONS_PER_CLIENT):
+            response = subscriptions.subscribe('flooder', reference, 'QUERY', 'IND', 'CLASS',
+                                               'Robot')
+            assert response.success, response.error_description
+        refused = subscriptions.subscribe('flooder', reference, 'QUERY', 'IND', 'CLASS', 'Robot')
+        assert not refused.success and refused.exit_code == CLIENT_LIMIT, refused
+        assert 'subscriptions_per_client' in refused.error_description
+        assert 'flooder' in refused.error_description
+        other = subscriptions.subscribe('neighbour', reference, 'QUERY', 'IND', 'CLASS', 'Robot')
+        assert other.success, other.error_description
+    finally:
+        subscriptions.close()
+
+
+def test_one_client_holds_at_most_its_share_of_references(call):
+    made = []
+    try:
+        for _ in range(REFERENCES_PER_CLIENT):
+            name = unique_name('flood')
+            succeeded(call, name, 'CREATE', '', 'false', 'HERMIT', 'false', client='flooder')
+            made.append(name)
+        response = failure(call, unique_name('flood'), 'CREATE', '', 'false', 'HERMIT', 'false',
+                           client='flooder', code=CLIENT_LIMIT)
+        assert 'references_per_client' in response.error_description
+        failure(call, unique_name('flood'), 'LOAD FILE', str(ROBOTICS_FILE), '', 'false', 'HERMIT',
+                'false', client='flooder', code=CLIENT_LIMIT)
+        # Another client is not held back, and a DROP gives the flooder room again.
+        other = unique_name('neighbour')
+        succeeded(call, other, 'CREATE', '', 'false', 'HERMIT', 'false', client='neighbour')
+        made.append(other)
+        succeeded(call, made.pop(0), 'DROP', client='flooder')
+        again = unique_name('flood')
+        succeeded(call, again, 'CREATE', '', 'false', 'HERMIT', 'false', client='flooder')
+        made.append(again)
+    finally:
+        for name in made:
+            call(name, 'DROP')
+
+
+def test_get_ref_changes_answers_a_bounded_page_and_where_to_go_on(call, load):
+    reference = load()
+    # Three changes of 600 KB each: more text than one answer carries.
+    for i in range(3):
+        succeeded(call, reference, 'ADD DATAPROP IND', 'note', 'robot1', 'STRING',
+                  str(i) * 600_000)
+    first = succeeded(call, reference, 'GET REF CHANGES', reference, '0')
+    assert 0 < len(first.queried_objects) < 3, len(first.queried_objects)
+    assert 'revision' in first.error_description, first.error_description
+    last = json.loads(first.queried_objects[-1])['revision']
+    rest = succeeded(call, reference, 'GET REF CHANGES', reference, str(last))
+    revisions = [json.loads(text)['revision'] for text in
+                 [*first.queried_objects, *rest.queried_objects]]
+    assert revisions == [1, 2, 3]
+
+
+# --- issue 34.4: the rules of docs/security.md, attacked live -----------------------------------
+
+@pytest.fixture(scope='module')
+def web_loading(tmp_path_factory):
+    """A node that loads from the web, and a local web server whose redirects try to leave it."""
+    scratch = tmp_path_factory.mktemp('web_loading')
+    node = start_node(scratch, '-p', 'web_loading:=true', namespace='/web_loading')
+    transport = ArmorTransport(namespace='/web_loading', service_wait_s=120.0)
+    yield scratch, transport
+    transport.close()
+    node.stop()
+
+
+class Redirects(http.server.BaseHTTPRequestHandler):
+    """/upper.owl: an ontology; /moved.owl: redirected to it; /steal.owl: redirected to a file."""
+
+    secret = ''
+
+    def do_GET(self):  # noqa: N802 (the standard library's name)
+        base = f'http://127.0.0.1:{self.server.server_address[1]}'
+        if self.path == '/upper.owl':
+            body = functional(f'{base}/upper.owl', body=f'Declaration(Class(<{base}/upper#Task>))')
+            self.send_response(200)
+            self.send_header('Content-Type', 'text/owl-functional')
+            self.end_headers()
+            self.wfile.write(body.encode())
+            return
+        self.send_response(302)
+        self.send_header('Location', f'{base}/upper.owl' if self.path == '/moved.owl'
+                         else self.secret)
+        self.end_headers()
+
+    def log_message(self, *args):
+        pass
+
+
+def test_a_web_redirect_to_a_local_file_is_213_and_one_to_the_web_is_followed(web_loading,
+                                                                             outside):
+    scratch, transport = web_loading
+    Redirects.secret = (outside / 'secret.owl').as_uri()
+    server = http.server.ThreadingHTTPServer(('127.0.0.1', 0), Redirects)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    base = f'http://127.0.0.1:{server.server_address[1]}'
+
+    def send(reference, words, *args):
+        command, primary, secondary = (words.split() + ['', '', ''])[:3]
+        return transport.call(directive('test', reference, command, primary, secondary, args),
+                              timeout_s=120)
+    try:
+        moved = unique_name('moved')
+        assert send(moved, 'LOAD WEB', f'{base}/moved.owl', '', 'false', 'HERMIT',
+                    'false').success
+        send(moved, 'DROP')
+        stolen = send(unique_name('stolen'), 'LOAD WEB', f'{base}/steal.owl', '', 'false',
+                      'HERMIT', 'false')
+        assert stolen.exit_code == PATH_NOT_ALLOWED, stolen
+        imported = send(unique_name('stolen'), 'LOAD FILE',
+                        str(importer(scratch, f'{base}/steal.owl')), '', 'false', 'HERMIT', 'false')
+        assert imported.exit_code == PATH_NOT_ALLOWED, imported
+        assert SECRET_IRI not in send('', 'GET ALL REFS').queried_objects
+    finally:
+        server.shutdown()
+
+
+ALIAS_BOMB = 'domain: d\na: &a ["x","x","x","x","x","x","x","x","x"]\n' + ''.join(
+    f'{chr(98 + i)}: &{chr(98 + i)} [*{chr(97 + i)},*{chr(97 + i)},*{chr(97 + i)},*{chr(97 + i)},'
+    f'*{chr(97 + i)},*{chr(97 + i)},*{chr(97 + i)},*{chr(97 + i)},*{chr(97 + i)}]\n'
+    for i in range(8))
+
+
+@pytest.mark.parametrize('mapping, code, says', [
+    # A tag that would build a Java object.
+    ('domain: d\ngoal: !!javax.script.ScriptEngineManager [!!java.net.URLClassLoader '
+     '[[!!java.net.URL ["http://127.0.0.1:9/"]]]]\n', 208, 'tag'),
+    # Nine times nine times ... aliases: a billion strings from a few hundred bytes.
+    (ALIAS_BOMB, 208, 'aliases'),
+    # Nesting far deeper than any mapping.
+    ('domain: d\ngoal: ' + '[' * 200 + ']' * 200 + '\n', 208, 'nesting'),
+])
+def test_a_hostile_pddl_mapping_is_refused_before_it_is_built(call, no_connection, mapping, code,
+                                                              says):
+    started = time.monotonic()
+    response = failure(call, 'robotics', 'QUERY PDDL PROBLEM', mapping, code=code)
+    assert says in response.error_description.lower(), response.error_description
+    assert time.monotonic() - started < 30
+
+
+def test_a_pddl_mapping_file_over_its_size_limit_is_221(call, armor_node):
+    mapping = armor_node.scratch / f'{unique_name("huge")}.yaml'
+    mapping.write_text('domain: d\n' + ''.join(f'# {i:0>100}\n' for i in range(11_000)))
+    assert mapping.stat().st_size > MiB
+    response = failure(call, 'robotics', 'QUERY PDDL PROBLEM', str(mapping), code=TOO_LARGE)
+    assert str(mapping) in response.error_description
+
+
+# --- issue 27.7: the armor call relay and another local user -----------------------------------
+
+ATTACKER = 'armor-relay-attacker'
+# Run as the other user: makes the victim's relay folder (or a link to one of its own), waits for
+# the victim's relay socket, puts its own in its place and answers every directive "applied".
+FAKE_RELAY = r'''
+import json, os, socket, sys, time
+shared, victim, shape = sys.argv[1], sys.argv[2], sys.argv[3]
+user_dir = os.path.join(shared, 'armor-' + victim)
+if shape == 'link':
+    own = os.path.join(shared, 'attacker-owned')
+    os.makedirs(os.path.join(own, 'armor-call'), mode=0o777)
+    os.symlink(own, user_dir)
+    os.chmod(own, 0o777)
+else:
+    os.makedirs(os.path.join(user_dir, 'armor-call'))
+    os.chmod(user_dir, 0o777)
+folder = os.path.join(user_dir, 'armor-call')
+os.chmod(folder, 0o777)
+deadline = time.monotonic() + 90
+while time.monotonic() < deadline:
+    sockets = [name for name in os.listdir(folder) if name.endswith('.sock')]
+    if sockets:
+        break
+    time.sleep(0.05)
+else:
+    sys.exit(0)
+path = os.path.join(folder, sockets[0])
+os.unlink(path)
+server = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+server.bind(path)
+os.chmod(path, 0o777)
+server.listen(8)
+open(os.path.join(shared, 'replaced'), 'w').close()
+server.settimeout(1.0)
+while time.monotonic() < deadline:
+    try:
+        connection, _ = server.accept()
+    except socket.timeout:
+        continue
+    request = connection.makefile('rb').readline()
+    with open(os.path.join(shared, 'stolen'), 'ab') as stolen:
+        stolen.write(request)
+    connection.sendall(json.dumps({'response': {
+        'success': True, 'timeout': False, 'exit_code': 0, 'error_description': '',
+        'is_consistent': True, 'queried_objects': [], 'sparql_queried_objects': []}}).encode() + b'\n')
+    connection.close()
+'''
+
+
+@pytest.fixture(scope='module')
+def attacker_user():
+    """A second, real local user (made for this module and removed after it, unless it existed)."""
+    import pwd
+    try:
+        pwd.getpwnam(ATTACKER)
+        made = False
+    except KeyError:
+        subprocess.run(['useradd', '--system', '--no-create-home', '--shell', '/usr/sbin/nologin',
+                        ATTACKER], check=True)
+        made = True
+    yield pwd.getpwnam(ATTACKER)
+    if made:
+        subprocess.run(['userdel', ATTACKER], check=False)
+
+
+@pytest.mark.parametrize('shape', ['folder', 'link'])
+def test_armor_call_never_hands_a_directive_to_another_users_relay(call, load, attacker_user,
+                                                                   shape):
+    reference = load()
+    shared = pathlib.Path('/tmp') / unique_name('armor-shared-tmp')
+    shared.mkdir()
+    shared.chmod(0o1777)  # what /tmp is: every user may create in it
+    environment = {**os.environ, 'TMPDIR': str(shared), 'ARMOR_CALL_RELAY_IDLE_S': '20'}
+    environment.pop('XDG_RUNTIME_DIR', None)
+    fake = subprocess.Popen(['/usr/bin/python3', '-c', FAKE_RELAY, str(shared), str(os.getuid()),
+                             shape], user=attacker_user.pw_uid, group=attacker_user.pw_gid,
+                            extra_groups=[])
+
+    def armor_call(*words):
+        return subprocess.run([sys.executable, '-m', 'armor_client.cli', 'call', '--wait', '60',
+                               reference, *words], capture_output=True, text=True, timeout=180,
+                              env=environment)
+    try:
+        deadline = time.monotonic() + 10
+        while not (shared / f'armor-{os.getuid()}').exists() and time.monotonic() < deadline:
+            time.sleep(0.05)
+        first = armor_call('QUERY', 'IND', 'CLASS', '--', 'Robot')
+        assert first.returncode == 0, first.stderr
+        refused = 'relay' in first.stderr and str(attacker_user.pw_uid) in first.stderr \
+            or 'symbolic link' in first.stderr
+        deadline = time.monotonic() + 30
+        while not refused and not (shared / 'replaced').exists() and time.monotonic() < deadline:
+            time.sleep(0.1)
+        second = armor_call('ADD', 'IND', 'CLASS', '--', 'relayed_check', 'Robot')
+        assert second.returncode == 0, second.stderr
+        assert not (shared / 'stolen').exists(), (shared / 'stolen').read_text()
+        assert '<http://www.example.org/robotics#relayed_check>' in answer(
+            call, reference, 'QUERY IND CLASS', 'Robot'), 'the change never reached ARMOR'
+        assert 'relay' in second.stderr, second.stderr  # says why it calls without the relay
+    finally:
+        fake.kill()
+        fake.wait()
+        subprocess.run([sys.executable, '-c', 'from armor_client.cli import call_relay; '
+                        'call_relay.stop()'], env=environment, capture_output=True, timeout=60)
+        shutil.rmtree(shared, ignore_errors=True)
