@@ -15,12 +15,19 @@ ARMOR_CALL_RELAY=0 turns it off.
 Protocol: one JSON request line per connection; answers are JSON lines, ``{"state":
 "discovering"}`` while the service has not answered this relay yet, then ``{"response": {...}}``
 or ``{"error": "..."}``.
+
+The socket lies in $XDG_RUNTIME_DIR/armor-call, else in <temp dir>/armor-<uid>/armor-call. Each
+folder on the way is made 0700 or, if it exists, must be a real folder (not a link) of this user
+that no one else can enter: another user who made /tmp/armor-<uid> first could otherwise swap the
+socket, read every directive and answer it. A folder that fails is refused (RelayRefused, saying
+why) and the call goes without the relay.
 """
 
 import hashlib
 import json
 import os
 import socket
+import stat
 import subprocess
 import sys
 import tempfile
@@ -40,15 +47,44 @@ def socket_path() -> str:
     """The socket of the relay for this user and this ROS environment."""
     environment = sorted((k, v) for k, v in os.environ.items() if k.startswith(_ENV_PREFIXES))
     key = json.dumps([sys.executable, __file__, os.stat(__file__).st_mtime, environment])
-    runtime = os.environ.get('XDG_RUNTIME_DIR') or os.path.join(tempfile.gettempdir(),
-                                                                f'armor-{os.getuid()}')
-    folder = os.path.join(runtime, 'armor-call')
-    os.makedirs(folder, mode=0o700, exist_ok=True)
+    runtime = os.environ.get('XDG_RUNTIME_DIR')
+    runtime = _private_folder(runtime) if runtime else _private_folder(
+        os.path.join(tempfile.gettempdir(), f'armor-{os.getuid()}'))
+    folder = _private_folder(os.path.join(runtime, 'armor-call'))
     return os.path.join(folder, hashlib.sha256(key.encode()).hexdigest()[:20] + '.sock')
 
 
 class RelayUnavailable(Exception):
     """No relay answered before the request was sent: calling directly is safe."""
+
+
+class RelayRefused(RelayUnavailable):
+    """The relay's folder is not this user's alone: no relay is used or started there."""
+
+
+def _private_folder(path: str) -> str:
+    """path, a folder only this user can reach: made 0700 if missing, else checked as it is."""
+    try:
+        os.mkdir(path, 0o700)
+    except FileExistsError:
+        pass
+    except OSError as error:
+        raise RelayRefused(f'not using the call relay: cannot make {path}: {error}') from error
+    info = os.lstat(path)
+    uid = os.getuid()
+    why = ''
+    if stat.S_ISLNK(info.st_mode):
+        why = 'is a symbolic link'
+    elif not stat.S_ISDIR(info.st_mode):
+        why = 'is not a folder'
+    elif info.st_uid != uid:
+        why = f'belongs to uid {info.st_uid}, not to you (uid {uid})'
+    elif info.st_mode & 0o077:
+        why = f'can be entered by other users (mode {info.st_mode & 0o777:o})'
+    if why:
+        raise RelayRefused(f'not using the call relay: {path} {why}; another user could read and '
+                           'answer your directives there (remove it, or set XDG_RUNTIME_DIR)')
+    return path
 
 
 def call(request: dict, on_state: Callable[[str], None]) -> dict:
@@ -195,7 +231,12 @@ class _Relay:
 
 
 def _bind(path: str) -> Optional[socket.socket]:
-    """Listen on path, replacing a stale socket; None when a live relay has it."""
+    """Listen on path, replacing a stale socket; None when a live relay has it (or its folder
+    is not this user's alone)."""
+    try:
+        _private_folder(os.path.dirname(path))
+    except RelayRefused:
+        return None
     probe = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     try:
         probe.connect(path)

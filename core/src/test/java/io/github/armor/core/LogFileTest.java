@@ -40,7 +40,7 @@ class LogFileTest {
         Response refused = logTo(f, fifo);
         assertFails(refused, 209);
         assertTrue(refused.errorDescription().contains("regular file"), refused.errorDescription());
-        assertFails(logTo(f, scratch), 209);
+        assertFails(logTo(f, Files.createDirectory(scratch.resolve("folder"))), 209);
     }
 
     @Test
