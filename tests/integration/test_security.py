@@ -14,6 +14,8 @@ import http.server
 import json
 import os
 import pathlib
+import re
+import shlex
 import shutil
 import socket
 import subprocess
@@ -1007,3 +1009,32 @@ def test_armor_call_never_hands_a_directive_to_another_users_relay(call, load, a
         subprocess.run([sys.executable, '-c', 'from armor_client.cli import call_relay; '
                         'call_relay.stop()'], env=environment, capture_output=True, timeout=60)
         shutil.rmtree(shared, ignore_errors=True)
+
+
+def documented_writes():
+    """The `armor call` examples of the docs that write a file (SAVE, LOG FILE ON, ...)."""
+    commands = []
+    for page in ('commands.md', 'pddl.md'):
+        for line in (REPO / 'docs' / page).read_text().splitlines():
+            for command in re.findall(r'`?(armor call [^`|]*(?:SAVE|LOG FILE ON)[^`|]*)`?', line):
+                commands.append(command.strip())
+    return commands
+
+
+def test_the_documented_writes_work_with_make_runs_defaults(exposed, exposed_call):
+    commands = documented_writes()
+    assert len(commands) >= 4, commands
+    if 'surveillance' not in exposed_call('', 'GET ALL REFS').queried_objects:
+        succeeded(exposed_call, 'surveillance', 'LOAD FILE',
+                  str(REPO / 'ontologies' / 'surveillance.owl'), '', 'false', 'PELLET', 'false')
+    environment = {**os.environ, 'HOME': str(exposed.home)}
+    for command in commands:
+        # As a shell would: ~ expanded to the user's home.
+        words = shlex.split(command.replace('~/', f'{exposed.home}/'))
+        done = subprocess.run([sys.executable, '-m', 'armor_client.cli', 'call', '--namespace',
+                               EXPOSED, '--wait', '120', *words[2:]], capture_output=True,
+                              text=True, timeout=300, env=environment, cwd=REPO)
+        assert done.returncode == 0, (command, done.stderr)
+        written = [pathlib.Path(word) for word in words if word.startswith(str(exposed.home))]
+        assert written and all(path.is_file() for path in written), (command, written)
+    exposed_call('', 'LOG FILE OFF')
