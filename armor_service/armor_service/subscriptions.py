@@ -68,6 +68,7 @@ class SubscriptionTopics:
         self._idle_s = idle_s
         self._per_client = per_client
         self._lock = threading.Lock()
+        self._sweeping = threading.Lock()
         self._subscriptions: Dict[str, _Subscription] = {}
         # Subscriptions being made, by client: counted against the client's share meanwhile.
         self._being_made: Dict[str, int] = {}
@@ -196,6 +197,16 @@ class SubscriptionTopics:
 
         Also frees the topics of ended subscriptions that nobody subscribes to any more.
         """
+        # One sweep at a time: a sweep that ends many subscriptions outlasts the timer's period,
+        # and a second one would touch the publishers the first destroyed (the node died of it).
+        if not self._sweeping.acquire(blocking=False):
+            return
+        try:
+            self._sweep()
+        finally:
+            self._sweeping.release()
+
+    def _sweep(self) -> None:
         now = time.monotonic()
         idle_s = self._idle_s()
         with self._lock:
@@ -206,6 +217,8 @@ class SubscriptionTopics:
             self._draining_topics = [t for t in self._draining_topics if t not in free]
             self._free_topics.extend(free)
         for subscription in subscriptions:
+            if subscription.id not in self._subscriptions:
+                continue  # ended meanwhile (unsubscribed): its publisher is gone
             if subscription.publisher.get_subscription_count() > 0:
                 subscription.without_subscriber_since = now
             elif now - subscription.without_subscriber_since > idle_s:
