@@ -18,9 +18,9 @@ or ``{"error": "..."}``.
 
 The socket lies in $XDG_RUNTIME_DIR/armor-call, else in <temp dir>/armor-<uid>/armor-call. Each
 folder on the way is made 0700 or, if it exists, must be a real folder (not a link) of this user
-that no one else can enter: another user who made /tmp/armor-<uid> first could otherwise swap the
-socket, read every directive and answer it. A folder that fails is refused (RelayRefused, saying
-why) and the call goes without the relay.
+(closed to 0700 if it was looser), and the socket a socket of this user: another user who made
+/tmp/armor-<uid> first could otherwise swap the socket, read every directive and answer it. What
+fails is refused (RelayRefused, saying why) and the call goes without the relay.
 """
 
 import hashlib
@@ -80,7 +80,9 @@ def _private_folder(path: str) -> str:
     elif info.st_uid != uid:
         why = f'belongs to uid {info.st_uid}, not to you (uid {uid})'
     elif info.st_mode & 0o077:
-        why = f'can be entered by other users (mode {info.st_mode & 0o777:o})'
+        # The user's own folder, made looser by an older armor call (0755): closed now; what
+        # another user might have put in it is checked below it (owners, the socket's too).
+        os.chmod(path, 0o700)
     if why:
         raise RelayRefused(f'not using the call relay: {path} {why}; another user could read and '
                            'answer your directives there (remove it, or set XDG_RUNTIME_DIR)')
@@ -92,10 +94,12 @@ def call(request: dict, on_state: Callable[[str], None]) -> dict:
 
     Raises RelayUnavailable when no relay took the request, so nothing was sent to ARMOR.
     """
+    path = socket_path()
+    _refuse_foreign_socket(path)
     connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     try:
         connection.settimeout(0.5)
-        connection.connect(socket_path())
+        connection.connect(path)
         connection.sendall(json.dumps(request).encode() + b'\n')
         connection.settimeout(None)
     except OSError as error:
@@ -228,6 +232,18 @@ class _Relay:
             except OSError:
                 pass
             server.close()
+
+
+def _refuse_foreign_socket(path: str) -> None:
+    """Refuse a socket file that is not a socket of this user's (another user planted it)."""
+    try:
+        info = os.lstat(path)
+    except FileNotFoundError:
+        return
+    if not stat.S_ISSOCK(info.st_mode) or info.st_uid != os.getuid():
+        raise RelayRefused(f'not using the call relay: {path} is not a socket of yours (uid '
+                           f'{info.st_uid}); another user could read and answer your directives '
+                           'there (remove it)')
 
 
 def _bind(path: str) -> Optional[socket.socket]:
