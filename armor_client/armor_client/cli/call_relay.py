@@ -247,8 +247,7 @@ def _refuse_foreign_socket(path: str) -> None:
 
 
 def _bind(path: str) -> Optional[socket.socket]:
-    """Listen on path, replacing a stale socket; None when a live relay has it (or its folder
-    is not this user's alone)."""
+    """Listen on path, replacing a stale socket; None if a relay has it, or another user can."""
     try:
         _private_folder(os.path.dirname(path))
     except RelayRefused:
