@@ -97,13 +97,18 @@ class ChangeHistory(list):
 
     Attributes:
         complete: False when some changes after that revision are no longer kept (the node
-            keeps a reference's latest 10,000 changes); ``note`` then says from where it starts.
+            keeps a reference's latest 10,000 changes), or when the answer holds only the first
+            of them; ``note`` then says which.
+        more_after: the revision to ask from again for the changes one answer left out (an
+            answer holds at most 1,000 changes or 1 MiB), or None when none were.
     """
 
     def __init__(self, changes: Sequence[AcknowledgedChange], note: str):
         super().__init__(changes)
         self.note = note
         self.complete = not note
+        more = re.search(r'more changes after revision (\d+)', note)
+        self.more_after = int(more.group(1)) if more else None
 
 
 def _command_words(command: str) -> Tuple[str, ...]:

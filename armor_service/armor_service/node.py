@@ -19,6 +19,7 @@ from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service import wire
 from armor_service.core_process import CoreProcess, CoreUnavailable
 from armor_service.extensions import load_extensions
+from armor_service.installation import code_dirs
 from armor_service.parameters import all_parameters, core_settings, Parameter
 from armor_service.subscriptions import SubscriptionTopics
 import rclpy
@@ -38,6 +39,8 @@ class ArmorService(Node):
         self._declare_parameters()
         settings = core_settings(self._value, self.get_logger().warning)
         settings['state_dir'] = settings['state_dir'] or self._default_state_dir()
+        # Whatever protected_dirs says, no directive writes into the code the node runs.
+        settings['protected_dirs'] = [*settings['protected_dirs'], *code_dirs()]
         self._core = CoreProcess(
             self._core_jar(), settings, jvm_options=tuple(self._value('jvm_options')),
             start_timeout_s=self._value('core_start_timeout_s'), logger=self.get_logger(),
@@ -49,8 +52,9 @@ class ArmorService(Node):
         # Before the core starts: the preload's LOAD is a change too.
         self._change_publisher = self.create_publisher(ArmorChange, CHANGE_TOPIC, CHANGE_QOS)
         self._core.add_event_listener(self.on_core_event)
-        self._answer_topics = SubscriptionTopics(self, self._core, group,
-                                                 lambda: self._value('subscription_idle_s'))
+        self._answer_topics = SubscriptionTopics(
+            self, self._core, group, lambda: self._value('subscription_idle_s'),
+            lambda: self._value('subscriptions_per_client'))
         self._core.start()
         self.create_service(ArmorDirective, DIRECTIVE_SERVICE, self.directive_callback,
                             qos_profile=SERVICE_QOS, callback_group=group)

@@ -87,6 +87,11 @@ class Parameter:
 _NODE_DEFAULTS: Dict[str, Tuple[Callable[[], Any], str]] = {
     'allowed_dirs': (lambda: [os.getcwd(), os.path.expanduser('~'), tempfile.gettempdir()],
                      'working dir, home, temp dir'),
+    # One folder of ARMOR's own, made 0700 at start: nothing a client writes lands among the
+    # user's files, code or dotfiles unless the operator says where (docs/security.md).
+    'write_dirs': (lambda: [os.path.join(os.path.expanduser('~'), 'armor_files')],
+                   '`~/armor_files` (made 0700 at start)'),
+    'protected_dirs': (lambda: [], '(none; the installation always is)'),
     'state_dir': (lambda: '', '`$XDG_DATA_HOME/armor_ros2/domain<ID>/<node name>`'),
     # The plugins make setup installed (the PDDL bridge): install/setup.bash exports them.
     'plugin_dirs': (lambda: path_list(os.environ.get('ARMOR_PLUGIN_DIRS', '')),
@@ -94,10 +99,13 @@ _NODE_DEFAULTS: Dict[str, Tuple[Callable[[], Any], str]] = {
 }
 _NODE_DESCRIPTIONS = {
     'allowed_dirs': ' (a string array, one path, or paths joined by ":")',
+    'write_dirs': ' (a string array, one path, or paths joined by ":")',
+    'protected_dirs': ' (a string array, one path, or paths joined by ":")',
     'state_dir': ' (empty: the default directory)',
     'plugin_dirs': ' (a string array, one path, or paths joined by ":")',
 }
-_ALSO_STRING = {'allowed_dirs': path_list, 'plugin_dirs': path_list}
+_ALSO_STRING = {'allowed_dirs': path_list, 'write_dirs': path_list, 'protected_dirs': path_list,
+                'plugin_dirs': path_list}
 # Parameters of earlier releases still accepted: name -> (the parameter whose list it joins).
 DEPRECATED_ALIASES = {'plugin_dir': 'plugin_dirs'}
 
@@ -145,6 +153,11 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
     Parameter('subscription_idle_s', 'double', 5.0,
               "a subscription whose topic has had no subscriber this long ends (its client "
               "went away)", read_only=False),
+    # Each live subscription costs the node a publisher and the core a query after every change
+    # of its reference: one client's flood must not slow every other (docs/security.md).
+    Parameter('subscriptions_per_client', 'integer', 100,
+              'most live subscriptions one client_name may hold; then 225 (0 = no limit)',
+              read_only=False),
     Parameter('web_port', 'integer', 0,
               'TCP port of the live, read-only web view of every reference (0 = off; make run '
               'uses 8080; docs/web-view.md)'),

@@ -209,6 +209,28 @@ def test_a_floor_of_rooms_and_corridors_reads_as_a_map(web_node, page):
     assert graph_label(page, 'room_2_4') == 'room_2_4\nRoom'
 
 
+def test_one_link_whose_iri_the_naming_rules_refuse_leaves_the_rest_of_the_graph(web_node,
+                                                                                 page):
+    # An object property whose IRI holds a '|': RDF/XML takes it, ARMOR's naming rules do not.
+    ns = 'http://www.example.org/robotics#'
+    odd = 'http://www.example.org/odd|map#'
+    extra = (f'<owl:ObjectProperty rdf:about="{odd}leadsTo"/>\n'
+             f'<owl:NamedIndividual rdf:about="{ns}kitchen"><odd:leadsTo xmlns:odd="{odd}" '
+             f'rdf:resource="{ns}bedroom"/></owl:NamedIndividual>\n')
+    tbox = (ONTOLOGIES / 'robotics.owl').read_text()
+    path = web_node.scratch / 'odd-link.owl'
+    path.write_text(tbox.replace('</rdf:RDF>', extra + '</rdf:RDF>'))
+    load(web_node, 'web_odd', path=str(path))
+    open_reference(page, web_node, 'web_odd', 'graph')
+    note = page.locator('#graph-note')
+    # The robotics example's 5 individuals and their links, the odd one among them.
+    expect(note).to_contain_text('5 individuals')
+    expect(note.locator('.error')).to_have_count(0)
+    assert graph_label(page, 'bedroom') == 'bedroom\nRoom'
+    labels = page.evaluate('() => window.armorWeb.graph().edges().map((e) => e.data("label"))')
+    assert 'leadsTo' in labels and 'connectedTo' in labels, labels
+
+
 def test_an_inconsistent_reference_is_flagged_at_the_top_with_the_explanation(web_node, page):
     load(web_node, 'web_bad')
     open_reference(page, web_node, 'web_bad', 'individuals')

@@ -82,6 +82,9 @@ def _relayed(fields: dict, args, waiting: '_Waiting'):
         return call_relay.call({'directive': fields, 'namespace': args.namespace,
                                 'wait_s': args.wait, 'timeout_s': args.timeout},
                                on_state=waiting.state)
+    except call_relay.RelayRefused as refusal:
+        print(f'armor call: {refusal}', file=sys.stderr)
+        return None
     except call_relay.RelayUnavailable:
         call_relay.start_in_background()
         return None

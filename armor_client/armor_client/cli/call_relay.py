@@ -15,12 +15,19 @@ ARMOR_CALL_RELAY=0 turns it off.
 Protocol: one JSON request line per connection; answers are JSON lines, ``{"state":
 "discovering"}`` while the service has not answered this relay yet, then ``{"response": {...}}``
 or ``{"error": "..."}``.
+
+The socket lies in $XDG_RUNTIME_DIR/armor-call, else in <temp dir>/armor-<uid>/armor-call. Each
+folder on the way is made 0700 or, if it exists, must be a real folder (not a link) of this user
+(closed to 0700 if it was looser), and the socket a socket of this user: another user who made
+/tmp/armor-<uid> first could otherwise swap the socket, read every directive and answer it. What
+fails is refused (RelayRefused, saying why) and the call goes without the relay.
 """
 
 import hashlib
 import json
 import os
 import socket
+import stat
 import subprocess
 import sys
 import tempfile
@@ -40,10 +47,10 @@ def socket_path() -> str:
     """The socket of the relay for this user and this ROS environment."""
     environment = sorted((k, v) for k, v in os.environ.items() if k.startswith(_ENV_PREFIXES))
     key = json.dumps([sys.executable, __file__, os.stat(__file__).st_mtime, environment])
-    runtime = os.environ.get('XDG_RUNTIME_DIR') or os.path.join(tempfile.gettempdir(),
-                                                                f'armor-{os.getuid()}')
-    folder = os.path.join(runtime, 'armor-call')
-    os.makedirs(folder, mode=0o700, exist_ok=True)
+    runtime = os.environ.get('XDG_RUNTIME_DIR')
+    runtime = _private_folder(runtime) if runtime else _private_folder(
+        os.path.join(tempfile.gettempdir(), f'armor-{os.getuid()}'))
+    folder = _private_folder(os.path.join(runtime, 'armor-call'))
     return os.path.join(folder, hashlib.sha256(key.encode()).hexdigest()[:20] + '.sock')
 
 
@@ -51,15 +58,48 @@ class RelayUnavailable(Exception):
     """No relay answered before the request was sent: calling directly is safe."""
 
 
+class RelayRefused(RelayUnavailable):
+    """The relay's folder is not this user's alone: no relay is used or started there."""
+
+
+def _private_folder(path: str) -> str:
+    """path, a folder only this user can reach: made 0700 if missing, else checked as it is."""
+    try:
+        os.mkdir(path, 0o700)
+    except FileExistsError:
+        pass
+    except OSError as error:
+        raise RelayRefused(f'not using the call relay: cannot make {path}: {error}') from error
+    info = os.lstat(path)
+    uid = os.getuid()
+    why = ''
+    if stat.S_ISLNK(info.st_mode):
+        why = 'is a symbolic link'
+    elif not stat.S_ISDIR(info.st_mode):
+        why = 'is not a folder'
+    elif info.st_uid != uid:
+        why = f'belongs to uid {info.st_uid}, not to you (uid {uid})'
+    elif info.st_mode & 0o077:
+        # The user's own folder, made looser by an older armor call (0755): closed now; what
+        # another user might have put in it is checked below it (owners, the socket's too).
+        os.chmod(path, 0o700)
+    if why:
+        raise RelayRefused(f'not using the call relay: {path} {why}; another user could read and '
+                           'answer your directives there (remove it, or set XDG_RUNTIME_DIR)')
+    return path
+
+
 def call(request: dict, on_state: Callable[[str], None]) -> dict:
     """Send one request to the relay and return its final answer line.
 
     Raises RelayUnavailable when no relay took the request, so nothing was sent to ARMOR.
     """
+    path = socket_path()
+    _refuse_foreign_socket(path)
     connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     try:
         connection.settimeout(0.5)
-        connection.connect(socket_path())
+        connection.connect(path)
         connection.sendall(json.dumps(request).encode() + b'\n')
         connection.settimeout(None)
     except OSError as error:
@@ -194,8 +234,24 @@ class _Relay:
             server.close()
 
 
+def _refuse_foreign_socket(path: str) -> None:
+    """Refuse a socket file that is not a socket of this user's (another user planted it)."""
+    try:
+        info = os.lstat(path)
+    except FileNotFoundError:
+        return
+    if not stat.S_ISSOCK(info.st_mode) or info.st_uid != os.getuid():
+        raise RelayRefused(f'not using the call relay: {path} is not a socket of yours (uid '
+                           f'{info.st_uid}); another user could read and answer your directives '
+                           'there (remove it)')
+
+
 def _bind(path: str) -> Optional[socket.socket]:
-    """Listen on path, replacing a stale socket; None when a live relay has it."""
+    """Listen on path, replacing a stale socket; None if a relay has it, or another user can."""
+    try:
+        _private_folder(os.path.dirname(path))
+    except RelayRefused:
+        return None
     probe = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     try:
         probe.connect(path)

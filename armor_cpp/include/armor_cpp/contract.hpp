@@ -346,6 +346,7 @@ enum class ExitCode : int
   IMPORTS_UNRESOLVED = 222,  // owl:imports that could not be resolved
   FEDERATED_QUERY_DISABLED = 223,  // SPARQL SERVICE (federated query) is disabled
   UNKNOWN_NAME = 224,  // a query names an entity the reference does not know (node parameter strict_names)
+  CLIENT_LIMIT = 225,  // the client holds as many references or subscriptions as one client may
 };
 
 }  // namespace armor::contract

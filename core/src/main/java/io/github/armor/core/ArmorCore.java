@@ -224,9 +224,18 @@ public final class ArmorCore implements AutoCloseable {
     private ListResponse runList(List<Directive> directives, ListState list) {
         List<Response> responses = new ArrayList<>();
         int failed = -1;
+        long answered = 0;
         for (int i = 0; i < directives.size() && failed < 0; i++) {
             list.position = i;
             Response response = run(directives.get(i), list);
+            try {
+                answered = SizeLimits.addAnswer(answered, response);
+            } catch (ArmorException e) {
+                // No answer of it can reach the client: the whole list is refused, and undone.
+                list.rollback();
+                return new ListResponse(false, false, directives.stream()
+                        .map(d -> Response.failure(e, consistencyOf(d))).toList());
+            }
             responses.add(response);
             if (!response.success()) {
                 failed = i;

@@ -31,7 +31,8 @@ public enum ExitCode {
     TOO_LARGE(221, "an argument, directive, list or answer exceeds its size limit"),
     IMPORTS_UNRESOLVED(222, "owl:imports that could not be resolved"),
     FEDERATED_QUERY_DISABLED(223, "SPARQL SERVICE (federated query) is disabled"),
-    UNKNOWN_NAME(224, "a query names an entity the reference does not know (node parameter strict_names)");
+    UNKNOWN_NAME(224, "a query names an entity the reference does not know (node parameter strict_names)"),
+    CLIENT_LIMIT(225, "the client holds as many references or subscriptions as one client may");
 
     private final int code;
     private final String meaning;

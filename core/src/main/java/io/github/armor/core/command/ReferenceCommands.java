@@ -10,6 +10,7 @@ import io.github.armor.core.reference.LoadProgress;
 import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.ReasonerRegistry;
 import io.github.armor.core.reference.Reference;
+import io.github.armor.core.reference.WritablePaths;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
@@ -79,7 +80,8 @@ public final class ReferenceCommands implements CommandGroup {
         }
         table.command("LOG FILE ON").args("path").emptySurplusIgnored()
                 .summary("log directives to a file").global(c -> {
-            c.log().file(files(c).allowedPath(c.arg(0)));
+            WritablePaths writable = WritablePaths.of(c.config());
+            c.log().file(writable.openLog(writable.check(c.arg(0))));
             return Response.ok(true, List.of());
         });
         table.command("LOG FILE OFF").emptySurplusIgnored().summary("stop logging to a file").global(c -> {
@@ -132,10 +134,28 @@ public final class ReferenceCommands implements CommandGroup {
         // Revision 0 is the reference as made: its first change is revision 1.
         long wanted = Math.max(since + 1, 1);
         long keptFrom = history.oldestRevision() < 0 ? reference.revision() + 1 : history.oldestRevision();
-        String description = keptFrom <= wanted ? "" : "changes from revision " + wanted + " to " + (keptFrom - 1)
-                + " are no longer kept; the answer starts at revision " + keptFrom;
-        return Response.ok(true, after.stream().map(change -> change.toJson().toString()).toList())
-                .withDescription(description);
+        List<String> notes = new java.util.ArrayList<>();
+        if (keptFrom > wanted) {
+            notes.add("changes from revision " + wanted + " to " + (keptFrom - 1)
+                    + " are no longer kept; the answer starts at revision " + keptFrom);
+        }
+        // One answer is bounded, whatever range is asked: the client asks again for the rest.
+        List<String> page = new java.util.ArrayList<>();
+        long text = 0;
+        for (AcknowledgedChange change : after) {
+            String json = change.toJson().toString();
+            if (!page.isEmpty() && (page.size() >= ChangeHistory.PAGE_CHANGES
+                    || text + json.length() > ChangeHistory.PAGE_TEXT)) {
+                long last = after.get(page.size() - 1).revision();
+                notes.add(ChangeHistory.MORE_AFTER + last + " (one answer holds at most "
+                        + ChangeHistory.PAGE_CHANGES + " changes or " + ChangeHistory.PAGE_TEXT
+                        + " characters): ask again from revision " + last + " for the rest");
+                break;
+            }
+            page.add(json);
+            text += json.length();
+        }
+        return Response.ok(true, page).withDescription(String.join("; ", notes));
     }
 
     private static OntologyFiles files(CommandContext c) {
@@ -157,7 +177,8 @@ public final class ReferenceCommands implements CommandGroup {
         Reference.Settings settings = new Reference.Settings(source, iriArgument, reasoner, bufferedManipulation,
                 bufferedReasoner);
         StringBuilder warnings = new StringBuilder();
-        Reference reference = c.references().createOrReuse(name, source, () -> {
+        Reference reference = c.references().createOrReuse(name, source, client,
+                c.config().safeguards().referencesPerClient(), () -> {
             try (LoadProgress progress = LoadProgress.start(name, source)) {
                 OntologyFiles.Loaded loaded = reader.apply(source);
                 warnings.append(loaded.warnings());
@@ -191,7 +212,7 @@ public final class ReferenceCommands implements CommandGroup {
                     + "' was not loaded from a file: SAVE needs a path");
         }
         OntologyFiles files = files(c);
-        Path target = files.allowedPath(pathArgument);
+        Path target = files.writablePath(pathArgument);
         String format = c.hasArg(1) ? c.arg(1) : "";
         if (withInferences) {
             files.save(Inferences.withInferences(reference), target, format.isEmpty() ? "rdfxml" : format);
