@@ -57,6 +57,8 @@ public final class ReferenceCommands implements CommandGroup {
                 .global(c -> Response.ok(true, LoadProgress.running()));
         table.command("GET CATALOGUE").summary("the catalogue: commands (plugins' too), exit codes, settings; JSON")
                 .global(c -> Response.ok(true, List.of(Catalogue.json(c.commands()).toString())));
+        table.command("GET STATE DAMAGE").summary("what the state directory could not restore or cannot keep now,"
+                + " one JSON object each; empty when nothing").global(c -> Response.ok(true, c.stateDamage()));
         table.command("GET REF CLIENT").optional("reference name").emptySurplusIgnored()
                 .summary("the client that holds the mount, if any").global(c -> {
             String holder = named(c).mountedBy();
