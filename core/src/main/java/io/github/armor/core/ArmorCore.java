@@ -250,8 +250,9 @@ public final class ArmorCore implements AutoCloseable {
                 list.rollback();
                 List<Response> undone = new ArrayList<>();
                 for (Directive directive : directives) {
-                    undone.add(rolledBack("undone because the list could not be journaled: " + e.getMessage(),
-                            directive));
+                    // The list's own cause (not durable), not 212: none of its directives failed.
+                    undone.add(Response.failure(new ArmorException(e.exitCode(), e.getMessage() + "; the whole list"
+                            + " was undone"), consistencyOf(directive)));
                 }
                 return new ListResponse(false, false, undone);
             }
@@ -340,7 +341,10 @@ public final class ArmorCore implements AutoCloseable {
                         state.dropped(reference);
                     }
                     if (spec.mountChecked()) {
-                        checkMount(reference, directive);
+                        if (!replaying.get()) {
+                            // A replayed record was acknowledged: it passed this check when it was made.
+                            checkMount(reference, directive);
+                        }
                         if (list != null) {
                             list.enrol(reference);
                         }

@@ -58,6 +58,8 @@ final class ReferenceStore {
     private Reference.Settings settings;
     private String formatClass;
     private CheckpointFile.Written checkpoint;
+    // The mount holder when the checkpoint was taken: replaying its journals changes it as it changed.
+    private String mountedAtCheckpoint = "";
     // The change history as it was at the checkpoint: the journals it replaces are deleted, and
     // GET REF CHANGES must still answer for those changes after a restart.
     private List<AcknowledgedChange> historyInCheckpoint = new ArrayList<>();
@@ -123,7 +125,8 @@ final class ReferenceStore {
                 reference.revision());
         store.journal = Journal.openForAppend(storage, store.journalFile(1), durability.fsync());
         store.journalSeqs.add(1L);
-        store.writeMeta(reference.mountedBy());
+        store.mountedAtCheckpoint = reference.mountedBy();
+        store.writeMeta();
         return store;
     }
 
@@ -249,8 +252,7 @@ final class ReferenceStore {
             });
         }
         if (!problems.isEmpty()) {
-            String mountedBy = meta.get("mounted_by").getAsString();
-            store.repairs.add(() -> store.writeMeta(mountedBy));
+            store.repairs.add(store::writeMeta);
         }
         store.runRepairsQuietly();
         store.recordsSinceCheckpoint = records.size();
@@ -346,6 +348,7 @@ final class ReferenceStore {
                 s.get("ontology_iri").getAsString(), s.get("reasoner").getAsString(),
                 s.get("buffered_manipulation").getAsBoolean(), s.get("buffered_reasoner").getAsBoolean());
         formatClass = meta.get("format").getAsString();
+        mountedAtCheckpoint = meta.get("mounted_by").getAsString();
         long revision = meta.has("checkpoint_revision") ? meta.get("checkpoint_revision").getAsLong() : 0;
         checkpoint = meta.has("current") ? CheckpointFile.Written.fromJson(meta.getAsJsonObject("current"))
                 // Written before checkpoints had checksums: trusted as they are.
@@ -454,7 +457,7 @@ final class ReferenceStore {
             String mountedBy = reference.mountedBy();
             long revision = reference.revision();
             List<AcknowledgedChange> history = reference.changeHistory().all();
-            long next = startNextJournal(mountedBy);
+            long next = startNextJournal();
             background.execute(() -> finishCheckpoint(copy, next, revision, mountedBy, history));
         } catch (IOException | RuntimeException e) {
             LOG.error("checkpoint of '{}' failed; its journal keeps growing until the next one: {}", name,
@@ -466,17 +469,17 @@ final class ReferenceStore {
     }
 
     /** Opens the next journal and names it in meta; when either fails the current one stays in use. */
-    private synchronized long startNextJournal(String mountedBy) throws IOException {
+    private synchronized long startNextJournal() throws IOException {
         long next = ++highestSeq;
         Journal fresh = Journal.openForAppend(storage, journalFile(next), durability.fsync());
         journalSeqs.add(next);
         try {
-            writeMeta(mountedBy);
+            writeMeta();
         } catch (IOException | RuntimeException e) {
             journalSeqs.remove(next);
             fresh.close();
             // Deleted only once no meta names it; left empty it replays as nothing.
-            if (restoreMeta(mountedBy, e)) {
+            if (restoreMeta(e)) {
                 storage.deleteIfExists(journalFile(next));
             }
             throw e;
@@ -498,20 +501,23 @@ final class ReferenceStore {
                 List<Long> oldJournals = journalSeqs;
                 List<Long> oldPreviousJournals = previousJournals;
                 List<AcknowledgedChange> oldHistory = historyInCheckpoint;
+                String oldMounted = mountedAtCheckpoint;
                 previous = checkpoint;
                 previousJournals = journalSeqs.stream().filter(s -> s < seq).toList();
                 journalSeqs = new ArrayList<>(journalSeqs.stream().filter(s -> s >= seq).toList());
                 checkpoint = written;
                 historyInCheckpoint = history;
+                mountedAtCheckpoint = mountedBy;
                 try {
-                    writeMeta(mountedBy);
+                    writeMeta();
                 } catch (IOException | RuntimeException e) {
                     checkpoint = oldCheckpoint;
                     previous = oldPrevious;
                     journalSeqs = oldJournals;
                     previousJournals = oldPreviousJournals;
                     historyInCheckpoint = oldHistory;
-                    if (!restoreMeta(mountedBy, e)) {
+                    mountedAtCheckpoint = oldMounted;
+                    if (!restoreMeta(e)) {
                         written = null;
                     }
                     throw e;
@@ -556,9 +562,9 @@ final class ReferenceStore {
      * After a failed meta write (one of the two copies may have been replaced), writes meta as it
      * was again; false when that fails too, and files the new meta names must then stay.
      */
-    private boolean restoreMeta(String mountedBy, Exception failure) {
+    private boolean restoreMeta(Exception failure) {
         try {
-            writeMeta(mountedBy);
+            writeMeta();
             return true;
         } catch (IOException | RuntimeException e) {
             failure.addSuppressed(e);
@@ -566,7 +572,7 @@ final class ReferenceStore {
         }
     }
 
-    private void writeMeta(String mountedBy) throws IOException {
+    private void writeMeta() throws IOException {
         JsonObject s = new JsonObject();
         s.addProperty("source", settings.source());
         s.addProperty("ontology_iri", settings.ontologyIri());
@@ -577,7 +583,7 @@ final class ReferenceStore {
         meta.addProperty("name", name);
         meta.add("settings", s);
         meta.addProperty("format", formatClass);
-        meta.addProperty("mounted_by", mountedBy);
+        meta.addProperty("mounted_by", mountedAtCheckpoint);
         meta.add("current", checkpoint.toJson());
         meta.addProperty("checkpoint_revision", checkpoint.revision());
         meta.add("journals", numbers(journalSeqs));
