@@ -14,8 +14,6 @@ import java.util.Set;
 import java.util.zip.CRC32C;
 import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.formats.FunctionalSyntaxDocumentFormat;
-import org.semanticweb.owlapi.formats.OWLXMLDocumentFormat;
-import org.semanticweb.owlapi.formats.PrefixDocumentFormat;
 import org.semanticweb.owlapi.io.StreamDocumentSource;
 import org.semanticweb.owlapi.model.AddImport;
 import org.semanticweb.owlapi.model.AddOntologyAnnotation;
@@ -30,9 +28,10 @@ import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.OWLOntologyStorageException;
 
 /**
- * A reference's ontology as a file of the state directory: written in OWL functional syntax, or
- * in OWL/XML when functional syntax cannot carry it (an IRI holding {@code >}, which RDF/XML
- * accepts), and kept only once it has been read back and found equal. Its CRC32C and length go
+ * A reference's ontology as a file of the state directory, in OWL functional syntax, kept only
+ * once it has been read back and found equal: an ontology it cannot carry (an IRI holding
+ * {@code <} or {@code >}, which RDF/XML accepts; neither OWL/XML nor RDF/XML reads such an IRI
+ * back either) is refused at LOAD rather than lost at the next restart. Its CRC32C and length go
  * into meta, so a restore tells a damaged checkpoint from a good one.
  */
 final class CheckpointFile {
@@ -56,6 +55,13 @@ final class CheckpointFile {
     }
 
     private CheckpointFile() {
+    }
+
+    /** A written checkpoint that does not parse. */
+    private static final class Unreadable extends RuntimeException {
+        Unreadable(String why) {
+            super(why);
+        }
     }
 
     /** The ontology's own axioms, annotations and imports, with its prefixes, in a manager of its own. */
@@ -85,27 +91,35 @@ final class CheckpointFile {
      * it is left behind when it fails.
      */
     static Written write(Storage storage, OWLOntology copy, Path dir, long seq, long revision) throws IOException {
-        String unreadable = null;
-        for (PrefixDocumentFormat format : List.of(new FunctionalSyntaxDocumentFormat(), new OWLXMLDocumentFormat())) {
-            String name = "checkpoint-" + seq + (format instanceof OWLXMLDocumentFormat ? ".owx" : ".ofn");
-            Path temporary = dir.resolve(name + ".tmp");
+        String name = "checkpoint-" + seq + ".ofn";
+        Path temporary = dir.resolve(name + ".tmp");
+        try {
+            long[] crcAndBytes = save(storage, copy, temporary);
+            String difference;
             try {
-                long[] crcAndBytes = save(storage, copy, format, temporary);
-                String difference = difference(copy, readBack(storage.read(temporary), copy, format));
-                if (difference == null) {
-                    storage.rename(temporary, dir.resolve(name));
-                    storage.syncDirectory(dir);
-                    return new Written(name, crcAndBytes[0], crcAndBytes[1], revision);
-                }
-                unreadable = (unreadable == null ? "" : unreadable + "; ") + name + " would not read back: "
-                        + difference;
-            } catch (IOException | RuntimeException e) {
-                deleteQuietly(storage, temporary);
-                throw e instanceof IOException io ? io : new IOException("cannot write " + name + ": " + e, e);
+                difference = difference(copy, readBack(storage.read(temporary), copy));
+            } catch (Unreadable e) {
+                difference = "it does not parse (" + e.getMessage() + ")";
             }
+            if (difference != null) {
+                throw new IOException("the ontology cannot be kept: its checkpoint does not read back the same: "
+                        + difference + unwritableIri(copy));
+            }
+            storage.rename(temporary, dir.resolve(name));
+            storage.syncDirectory(dir);
+            return new Written(name, crcAndBytes[0], crcAndBytes[1], revision);
+        } catch (IOException | RuntimeException e) {
             deleteQuietly(storage, temporary);
+            throw e instanceof IOException io ? io : new IOException("cannot write " + name + ": " + e, e);
         }
-        throw new IOException("no checkpoint format represents this ontology: " + unreadable);
+    }
+
+    /** Names an IRI OWL functional syntax cannot write (it writes IRIs between < and >), if any. */
+    private static String unwritableIri(OWLOntology ontology) {
+        return ontology.signature().map(e -> e.getIRI().toString())
+                .filter(iri -> iri.chars().anyMatch(c -> c == '<' || c == '>' || Character.isWhitespace(c)))
+                .findFirst().map(iri -> "; the IRI '" + iri + "' holds a character functional syntax cannot write")
+                .orElse("");
     }
 
     /** Checks a checkpoint's bytes against meta before it is parsed. */
@@ -123,12 +137,8 @@ final class CheckpointFile {
         }
     }
 
-    private static long[] save(Storage storage, OWLOntology copy, PrefixDocumentFormat format, Path file)
-            throws IOException {
-        OWLDocumentFormat kept = copy.getOWLOntologyManager().getOntologyFormat(copy);
-        if (kept != null && kept.isPrefixOWLDocumentFormat()) {
-            format.copyPrefixesFrom(kept.asPrefixOWLDocumentFormat());
-        }
+    private static long[] save(Storage storage, OWLOntology copy, Path file) throws IOException {
+        OWLDocumentFormat format = copy.getOWLOntologyManager().getOntologyFormat(copy);
         CRC32C crc = new CRC32C();
         try (Storage.Output out = storage.create(file)) {
             OutputStream stream = new OutputStream() {
@@ -172,7 +182,7 @@ final class CheckpointFile {
     }
 
     /** Parses what was written, without following its imports (they are not part of it). */
-    private static OWLOntology readBack(byte[] bytes, OWLOntology copy, OWLDocumentFormat format) throws IOException {
+    private static OWLOntology readBack(byte[] bytes, OWLOntology copy) {
         OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
         OWLOntologyLoaderConfiguration configuration = new OWLOntologyLoaderConfiguration()
                 .setMissingImportHandlingStrategy(MissingImportHandlingStrategy.SILENT)
@@ -182,9 +192,10 @@ final class CheckpointFile {
         }
         try {
             return manager.loadOntologyFromOntologyDocument(new StreamDocumentSource(new ByteArrayInputStream(bytes),
-                    "urn:armor:checkpoint", format, null), configuration);
+                    "urn:armor:checkpoint", new FunctionalSyntaxDocumentFormat(), null), configuration);
         } catch (OWLOntologyCreationException | RuntimeException e) {
-            return null;
+            String message = String.valueOf(e.getMessage());
+            throw new Unreadable(message.substring(0, Math.min(3000, message.length())));
         }
     }
 
@@ -194,9 +205,6 @@ final class CheckpointFile {
      * counted, as their labels may change.
      */
     static String difference(OWLOntology written, OWLOntology read) {
-        if (read == null) {
-            return "it does not parse";
-        }
         if (!written.getOntologyID().equals(read.getOntologyID())) {
             return "its ontology IRI reads back as " + read.getOntologyID();
         }
