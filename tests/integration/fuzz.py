@@ -161,7 +161,7 @@ class Fuzzer:
         self.grammar = Grammar(self.rng, scratch)
         # Random axioms can send a reasoner into exponential work: as a deployment facing
         # untrusted input would, the run bounds reasoning, so such a directive answers 211.
-        self.node = start_node(scratch, '-p', 'reasoner_timeout_ms:=3000',
+        self.node = start_node(scratch, '-p', 'reasoner_timeout_ms:=10000',
                                '-p', 'request_timeout_s:=120.0', namespace='/fuzz')
         self.armor = ArmorTransport(namespace='/fuzz', service_wait_s=120.0)
         # Buffered reasoners: a change does not wait for reasoning (REASON in the stream does it).
@@ -242,6 +242,8 @@ class Fuzzer:
                 self.codes[response.exit_code] = self.codes.get(response.exit_code, 0) + 1
                 if response.exit_code not in self.defined_codes:
                     self.undefined.append((words, args[:3], response.exit_code))
+                    print(f'UNDEFINED EXIT CODE {response.exit_code}: {" ".join(words)} '
+                          f'{[a[:60] for a in args[:4]]}', flush=True)
             touches_target = any(r.reference_name == 'target' for r in sent)
             query = command is not None and command['kind'] == 'query' and len(sent) == 1
             if acknowledged and not query:
@@ -254,6 +256,10 @@ class Fuzzer:
                 now = self.target_state()
                 if now != self.state:
                     self.changed_by_rejected.append((words, [a[:40] for a in args[:4]]))
+                    print(f'CHANGED BY A REJECTED DIRECTIVE: {" ".join(words)} '
+                          f'{[a[:60] for a in args[:6]]} -> {[r.exit_code for r in responses]} '
+                          f'{responses[0].error_description[:200]!r}; state {self.state} -> {now}',
+                          flush=True)
                     self.state = now
             self.sent += 1
 

@@ -10,6 +10,7 @@ runs them longer and prints their figures.
 
 import json
 import socket
+import time
 import urllib.request
 
 from conftest import NS, start_node
@@ -72,6 +73,17 @@ def _call(armor, reference, words, *args):
                       timeout_s=120)
 
 
+def _first_call(armor, reference, words, *args):
+    """The first call to a node just started again: it may take a while to be discovered."""
+    deadline = time.monotonic() + 300
+    while True:
+        try:
+            return _call(armor, reference, words, *args)
+        except Exception:  # noqa: BLE001 - retried until the deadline
+            if time.monotonic() > deadline:
+                raise
+
+
 def test_a_restore_that_fails_says_so_and_the_preload_file_is_not_loaded_over_it(tmp_path):
     from armor_client import ArmorTransport
     node = start_node(tmp_path, namespace='/unrestorable')
@@ -85,7 +97,7 @@ def test_a_restore_that_fails_says_so_and_the_preload_file_is_not_loaded_over_it
             (refs / meta).write_text('{"meta": {"name": "robotics"}, "crc32c": 1}')
         port = _free_port()
         node = start_node(tmp_path, '-p', f'web_port:={port}', namespace='/unrestorable')
-        answer = _call(armor, '', 'GET ALL REFS')
+        answer = _first_call(armor, '', 'GET ALL REFS')
         assert answer.success and 'robotics' not in answer.queried_objects, node.log()
         damage = [json.loads(line) for line in _call(armor, '', 'GET STATE DAMAGE').queried_objects]
         assert [d['reference'] for d in damage] == ['robotics'] and damage[0]['restored'] is False
@@ -117,7 +129,7 @@ def test_a_damaged_journal_record_is_reported_and_the_changes_before_it_restored
         data[offsets[2] + 12] ^= 0x04
         journal.write_bytes(bytes(data))
         node = start_node(tmp_path, namespace='/damaged')
-        robots = set(_call(armor, 'robotics', 'QUERY IND CLASS', 'Robot').queried_objects)
+        robots = set(_first_call(armor, 'robotics', 'QUERY IND CLASS', 'Robot').queried_objects)
         assert {f'<{NS}bot0>', f'<{NS}bot1>'} <= robots, node.log()
         assert not {f'<{NS}bot2>', f'<{NS}bot3>'} & robots
         damage = [json.loads(line) for line in _call(armor, '', 'GET STATE DAMAGE').queried_objects]
@@ -129,8 +141,71 @@ def test_a_damaged_journal_record_is_reported_and_the_changes_before_it_restored
         assert _call(armor, 'robotics', 'ADD IND CLASS', 'bot4', 'Robot').success
         node.stop()
         node = start_node(tmp_path, namespace='/damaged')
-        robots = set(_call(armor, 'robotics', 'QUERY IND CLASS', 'Robot').queried_objects)
+        robots = set(_first_call(armor, 'robotics', 'QUERY IND CLASS', 'Robot').queried_objects)
         assert {f'<{NS}bot0>', f'<{NS}bot1>', f'<{NS}bot4>'} <= robots
+    finally:
+        armor.close()
+        node.stop()
+
+
+LIBFAKETIME = '/usr/lib/x86_64-linux-gnu/faketime/libfaketime.so.1'
+
+
+def test_clock_jumps_leave_mount_leases_and_checkpoints_on_time(tmp_path):
+    """The system clock stepping back an hour and forward a day under the node and the core.
+
+    libfaketime (installed by make setup) moves the wall clock of both processes while they run;
+    the monotonic clock is left alone, as a real clock step leaves it. Durations (a mount's lease,
+    the checkpoint interval) must not stretch or shrink with the wall clock.
+    """
+    import os
+    from armor_client import ArmorTransport
+    assert os.path.exists(LIBFAKETIME), 'libfaketime is missing: run make setup'
+    offset = tmp_path / 'faketime'
+    offset.write_text('+0\n')
+    env = dict(os.environ, LD_PRELOAD=LIBFAKETIME, FAKETIME_TIMESTAMP_FILE=str(offset),
+               FAKETIME_DONT_FAKE_MONOTONIC='1', FAKETIME_CACHE_DURATION='1')
+    args = ('-p', 'mount_lease_s:=30', '-p', 'checkpoint_every_s:=2',
+            '-p', 'checkpoint_every_changes:=100000')
+    node = start_node(tmp_path, *args, namespace='/clock', env=env)
+    armor = ArmorTransport(namespace='/clock', service_wait_s=300.0)
+
+    def step(text):
+        offset.write_text(text + '\n')
+        time.sleep(2.5)  # past the processes' one-second cache of the offset
+
+    def meta_checkpoint():
+        meta = json.loads((tmp_path / 'state' / 'refs' / 'robotics' / 'meta.json').read_text())
+        return meta['meta']['current']['file']
+
+    try:
+        from armor_client import directive
+        assert armor.call(directive('holder', 'robotics', 'MOUNT', '', '', []), timeout_s=300).success
+        mounted = time.monotonic()
+        step('-3600')
+        assert _call(armor, 'robotics', 'ADD IND CLASS', 'early', 'Robot').exit_code == 102
+        step('+86400')
+        # A lease counted on the wall clock would have expired a day ago.
+        assert _call(armor, 'robotics', 'ADD IND CLASS', 'early2', 'Robot').exit_code == 102
+        assert time.monotonic() - mounted < 30, 'too slow to tell: the lease ran out meanwhile'
+        time.sleep(max(0.0, mounted + 31.5 - time.monotonic()))
+        assert _call(armor, 'robotics', 'ADD IND CLASS', 'late', 'Robot').success
+        # Checkpoints every 2 s of the monotonic clock, whatever the wall clock did.
+        step('-3600')
+        before = meta_checkpoint()
+        assert _call(armor, 'robotics', 'ADD IND CLASS', 'c1', 'Robot').success
+        time.sleep(3)
+        assert _call(armor, 'robotics', 'ADD IND CLASS', 'c2', 'Robot').success
+        deadline = time.monotonic() + 60
+        while meta_checkpoint() == before and time.monotonic() < deadline:
+            time.sleep(0.2)
+        assert meta_checkpoint() != before, 'no checkpoint after the clock stepped back'
+        step('+0')
+        node.stop()
+        node = start_node(tmp_path, *args, namespace='/clock', env=env)
+        robots = set(_first_call(armor, 'robotics', 'QUERY IND CLASS', 'Robot').queried_objects)
+        assert {f'<{NS}late>', f'<{NS}c1>', f'<{NS}c2>'} <= robots
+        assert not {f'<{NS}early>', f'<{NS}early2>'} & robots
     finally:
         armor.close()
         node.stop()

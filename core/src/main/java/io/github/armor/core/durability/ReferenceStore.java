@@ -111,6 +111,16 @@ final class ReferenceStore {
         }
     }
 
+    /**
+     * A folder without meta: a LOAD or CREATE cut short before it was acknowledged (meta is
+     * written last, and never missing afterwards).
+     */
+    static final class Unfinished extends IOException {
+        Unfinished() {
+            super("no meta.json: a reference whose creation was never finished");
+        }
+    }
+
     /** Files for a new reference: its first checkpoint is the ontology as loaded. */
     static ReferenceStore create(Storage storage, Path dir, Reference reference, Durability durability)
             throws IOException {
@@ -337,7 +347,7 @@ final class ReferenceStore {
             }
         }
         if (problems.isEmpty()) {
-            problems.add("meta.json is missing");
+            throw new Unfinished();
         }
         throw new Unrestorable(problems);
     }
@@ -522,6 +532,8 @@ final class ReferenceStore {
                     }
                     throw e;
                 }
+                // Meta names it now: whatever fails from here on must not delete it.
+                written = null;
                 if (oldPrevious != null) {
                     obsolete.add(dir.resolve(oldPrevious.file()));
                 }

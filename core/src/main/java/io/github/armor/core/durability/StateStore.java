@@ -98,6 +98,9 @@ public final class StateStore {
                                         importsDir(settings)), formatClass), setAside);
                         found.add(new Restorable(r.name(), r.ontology(), r.settings(), r.mountedBy(), r.records(),
                                 r.revision(), r.store(), r.history(), r.problems(), setAside));
+                    } catch (ReferenceStore.Unfinished e) {
+                        LOG.info("{}: {}; deleted", dir, e.getMessage());
+                        deleteTree(dir);
                     } catch (IOException | RuntimeException e) {
                         List<String> problems = e instanceof ReferenceStore.Unrestorable u ? u.problems
                                 : List.of(e.toString());
@@ -199,7 +202,9 @@ public final class StateStore {
         Path dir = dirFor(reference.name());
         try {
             stores.put(reference.name(), ReferenceStore.create(storage, dir, reference, durability));
-        } catch (IOException e) {
+        } catch (IOException | RuntimeException failure) {
+            // An ontology the OWL API cannot copy or write (an ontology IRI it refuses) cannot be kept either.
+            IOException e = failure instanceof IOException io ? io : new IOException(failure.toString(), failure);
             try {
                 deleteTree(dir);
             } catch (IOException cleanup) {
