@@ -338,7 +338,8 @@ def junit_campaigns(rounds: int, stride: int) -> list:
     result = subprocess.run(
         ['mvn', '-B', '-q', '-f', str(root / 'core' / 'pom.xml'), 'test',
          '-Dtest=StorageFaultsTest,DamagedFilesTest', f'-Darmor.faults.rounds={rounds}',
-         f'-Darmor.flip.stride={stride}', '-Dsurefire.failIfNoSpecifiedTests=false'],
+         '-Darmor.faults.stride=1', f'-Darmor.flip.stride={stride}',
+         '-Dsurefire.failIfNoSpecifiedTests=false'],
         capture_output=True, text=True)
     reports = root / 'core' / 'target' / 'surefire-reports'
     text = result.stdout + ''.join(p.read_text() for p in reports.glob('*StorageFaultsTest-output.txt'))
@@ -391,7 +392,7 @@ def main():
     parser.add_argument('--junit-rounds', type=int, default=3,
                         help='workload rounds of the JUnit campaigns (1 in make test)')
     parser.add_argument('--flip-stride', type=int, default=1,
-                        help='flip every n-th byte of checkpoints (23 in make test)')
+                        help='flip every n-th byte of the files (11 in make test)')
     options = parser.parse_args()
     scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-faults-'))
     if options.storage or options.full_disk != 200 or options.read_only != 20:

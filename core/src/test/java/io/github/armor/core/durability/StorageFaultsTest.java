@@ -23,11 +23,14 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * The storage failing under a workload, the SQLite way: run k makes the k-th I/O call fail (or
  * cuts the power at it), for every k the workload makes (issues 29 items 2 and 4, 34 item 3).
- * Each prints its figures; {@code -Darmor.faults.rounds=N} lengthens the workload
- * (tests/integration/fault_injection.py --storage runs it longer).
+ * Each prints its figures; {@code -Darmor.faults.rounds=N} lengthens the workload and
+ * {@code -Darmor.faults.stride=1} fails every call, not every third
+ * (tests/integration/fault_injection.py --storage runs it so).
  */
 class StorageFaultsTest {
     private static final int ROUNDS = Integer.getInteger("armor.faults.rounds", 1);
+    // make test fails every STRIDE-th call; the fault-injection script fails every one.
+    private static final int STRIDE = Integer.getInteger("armor.faults.stride", 3);
     private static final int CHECKPOINT_EVERY = 3;
     private static final Set<SimulatedDisk.Call> WRITES = EnumSet.complementOf(EnumSet.of(SimulatedDisk.Call.READ));
 
@@ -74,7 +77,7 @@ class StorageFaultsTest {
         List<Workload.Step> steps = Workload.steps(ROUNDS);
         int calls = callsOfACleanRun(steps);
         Figures figures = new Figures();
-        for (int k = Integer.getInteger("armor.faults.from", 1); k <= calls; k++) {
+        for (int k = Integer.getInteger("armor.faults.from", 1); k <= calls; k += STRIDE) {
             Path dir = scratch.resolve("eio-" + k);
             SimulatedDisk disk = new SimulatedDisk(dir).failCall(k, WRITES);
             ArmorCore core = Workload.core(dir, disk, CHECKPOINT_EVERY);
@@ -136,7 +139,7 @@ class StorageFaultsTest {
         int calls = callsOfACleanRun(steps);
         Figures figures = new Figures();
         for (boolean powerCut : List.of(true, false)) {
-            for (int k = 1; k <= calls; k++) {
+            for (int k = 1; k <= calls; k += STRIDE) {
                 Path dir = scratch.resolve((powerCut ? "power-" : "kill-") + k);
                 SimulatedDisk disk = new SimulatedDisk(dir).cutPowerAtCall(k);
                 ArmorCore core = Workload.core(dir, disk, CHECKPOINT_EVERY);
