@@ -440,11 +440,6 @@ final class ReferenceStore {
         }
     }
 
-    /** Whether changes are refused until owed repairs are done. */
-    synchronized boolean owesRepairs() {
-        return !repairs.isEmpty();
-    }
-
     /**
      * Starts a checkpoint when one is due. The caller holds the reference's lock; the reference
      * must have no buffered changes waiting (a checkpoint holds applied changes only).
@@ -650,11 +645,6 @@ final class ReferenceStore {
             throw e;
         }
         storage.syncDirectory(target.getParent());
-    }
-
-    /** The name of the reference these files keep. */
-    String name() {
-        return name;
     }
 
     /** The folder of these files. */

@@ -104,12 +104,6 @@ final class StateDamage {
         return report;
     }
 
-    /** Whether a restore of {@code reference} failed and nothing has replaced it since. */
-    synchronized boolean notRestored(String reference) {
-        return restores.stream().anyMatch(r -> r.get("reference").getAsString().equals(reference)
-                && !r.get("restored").getAsBoolean());
-    }
-
     void refusing(String reference, String why) {
         refusing.computeIfAbsent(reference, r -> {
             JsonObject entry = new JsonObject();

@@ -285,9 +285,21 @@ public final class StateStore {
         try {
             storage.createDirectories(gone.getParent());
             storage.rename(store.dir(), gone);
-            storage.syncDirectory(refsDir);
         } catch (IOException e) {
             throw notDurable("cannot remove the state of '" + reference.name() + "'", e);
+        }
+        try {
+            storage.syncDirectory(refsDir);
+        } catch (IOException e) {
+            // Not known to be on the disk: put the folder back and refuse. If even that fails, the
+            // folder is out of refs/ and the DROP goes on (only a power cut now could undo it).
+            try {
+                storage.rename(gone, store.dir());
+                throw notDurable("cannot remove the state of '" + reference.name() + "'", e);
+            } catch (IOException back) {
+                LOG.error("the DROP of '{}' could not be forced to disk nor undone: {}", reference.name(),
+                        back.toString());
+            }
         }
         stores.remove(reference.name());
         store.close();
