@@ -74,6 +74,19 @@ if [ ! -f /usr/lib/x86_64-linux-gnu/cmake/GTest/GTestConfig.cmake ] && [ ! -f /u
   fi
 fi
 
+# libfaketime for the clock-jump test (tests/integration/test_durability.py): it moves the wall
+# clock of the node and the core while they run. Debian's package, installed when missing.
+if [ ! -f /usr/lib/x86_64-linux-gnu/faketime/libfaketime.so.1 ]; then
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "prerequisites: installing libfaketime (apt-get install libfaketime)"
+    apt-get install -y -q libfaketime >/dev/null 2>&1 \
+      || { apt-get update -q >/dev/null 2>&1 && apt-get install -y -q libfaketime >/dev/null; } \
+      || die "could not install libfaketime (for the clock-jump test)."
+  else
+    die "libfaketime is required for the clock-jump test (Debian: apt-get install libfaketime)."
+  fi
+fi
+
 mkdir -p "$STAMPS" "$LOGS"
 
 # ---------------------------------------------------------------- helpers

@@ -8,6 +8,7 @@ through, e.g. ``armor serve --ros-args -p default_reasoner:=PELLET -r __ns:=/rob
 
 import concurrent.futures
 import difflib
+import json
 import os
 import sys
 
@@ -155,12 +156,32 @@ class ArmorService(Node):
         self._preload(send)
         self._answer_topics.register_again(send)
 
+    def _state_damage(self, send) -> list:
+        """What the core's state directory could not restore or cannot keep (GET STATE DAMAGE)."""
+        query = {'client_name': 'armor_service', 'reference_name': '', 'command': 'GET',
+                 'primary_command_spec': 'STATE', 'secondary_command_spec': 'DAMAGE', 'args': []}
+        answer = send({'op': 'directive', 'directive': query})['response']
+        damage = [json.loads(line) for line in answer['queried_objects']]
+        for entry in damage:
+            self.get_logger().error(f'state damage: {json.dumps(entry)}')
+        return damage
+
     def _preload(self, send) -> None:
         """Load the preload file into a new core, before it takes any request."""
+        damage = self._state_damage(send)
         path = self._value('preload_file')
         if not path:
             return
         name = self._value('preload_reference')
+        lost = [d for d in damage if d.get('reference') == name and d.get('restored') is False]
+        if lost:
+            # Loading the file over it would hide the loss: the robot's changes would seem gone for no reason.
+            self.get_logger().error(
+                f'reference "{name}" could not be restored from the state directory '
+                f'({"; ".join(lost[-1].get("problems", []))}); NOT preloading {path} over it. Its files '
+                f'are in {lost[-1].get("kept_in")}. To start from {path} anyway, move that folder '
+                'away (keep it to recover by hand) and restart, or start with -p restore_state:=false')
+            return
         listing = {'client_name': 'armor_service', 'reference_name': '', 'command': 'GET',
                    'primary_command_spec': 'ALL', 'secondary_command_spec': 'REFS', 'args': []}
         answer = send({'op': 'directive', 'directive': listing})['response']

@@ -156,7 +156,7 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
     # Each live subscription costs the node a publisher and the core a query after every change
     # of its reference: one client's flood must not slow every other (docs/security.md).
     Parameter('subscriptions_per_client', 'integer', 100,
-              'most live subscriptions one client_name may hold; then 225 (0 = no limit)',
+              'most live subscriptions one client_name may hold; then 226 (0 = no limit)',
               read_only=False),
     Parameter('web_port', 'integer', 0,
               'TCP port of the live, read-only web view of every reference (0 = off; make run '

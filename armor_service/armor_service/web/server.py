@@ -219,7 +219,14 @@ class _Routes:
 
     async def overview(self, request: web.Request) -> web.Response:
         return await self._shared(('overview',), self._live.version(), OVERVIEW_MAX_AGE_S,
-                                  lambda: self._reads.view({'name': 'overview'}))
+                                  self._overview_with_damage)
+
+    async def _overview_with_damage(self) -> Dict[str, Any]:
+        """Every reference's summary, and what the state directory lost or refuses (a banner)."""
+        overview = await self._reads.view({'name': 'overview'})
+        damage = await self._reads.directive('', 'GET', 'STATE', 'DAMAGE')
+        overview['state_damage'] = [json.loads(line) for line in damage.get('queried_objects', [])]
+        return overview
 
     async def recent(self, request: web.Request) -> web.Response:
         reference = request.query.get('reference', '')

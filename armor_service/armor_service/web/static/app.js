@@ -160,6 +160,7 @@ const overviewRefresher = new Refresher(async () => {
   const overview = await api('/api/overview');
   state.overview = overview.references;
   state.fetchedAt = performance.now();
+  renderStateDamage(overview.state_damage || []);
   renderReferenceList();
   if (!state.selected && state.overview.length) {
     const wanted = decodeURIComponent(location.hash.slice(2).split('/')[0] || '');
@@ -174,6 +175,16 @@ const overviewRefresher = new Refresher(async () => {
   }
   renderSummary();
 });
+
+// What GET STATE DAMAGE answers: restores that lost something, references refusing changes.
+function renderStateDamage(damage) {
+  const banner = $('#state-damage');
+  banner.hidden = !damage.length;
+  fill($('#state-damage-list'), ...damage.map((d) => el('li', {text: d.refusing_changes
+    ? `"${d.reference}": changes refused since ${d.since} (not durable: ${d.refusing_changes})`
+    : `"${d.reference}" ${d.restored ? `restored up to revision ${d.revision}` : 'NOT restored'}`
+      + ` (${d.when}): ${(d.problems || []).join('; ')}. Set aside in ${d.kept_in}`})));
+}
 
 function summaryOf(name) {
   return state.overview.find((r) => r.name === name);

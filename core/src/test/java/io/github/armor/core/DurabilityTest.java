@@ -145,6 +145,8 @@ class DurabilityTest {
     /** The checkpoint recovery would start from: the one meta.json names. */
     private long checkpointNumber() throws Exception {
         String meta = Files.readString(stateDir.resolve("refs").resolve("map").resolve("meta.json"));
-        return com.google.gson.JsonParser.parseString(meta).getAsJsonObject().get("checkpoint").getAsLong();
+        String file = com.google.gson.JsonParser.parseString(meta).getAsJsonObject().getAsJsonObject("meta")
+                .getAsJsonObject("current").get("file").getAsString();
+        return Long.parseLong(file.replaceAll("\\D", ""));
     }
 }

@@ -32,7 +32,9 @@ public enum ExitCode {
     IMPORTS_UNRESOLVED(222, "owl:imports that could not be resolved"),
     FEDERATED_QUERY_DISABLED(223, "SPARQL SERVICE (federated query) is disabled"),
     UNKNOWN_NAME(224, "a query names an entity the reference does not know (node parameter strict_names)"),
-    CLIENT_LIMIT(225, "the client holds as many references or subscriptions as one client may");
+    NOT_DURABLE(225, "not durable: the state directory did not take the change (disk full, I/O error,"
+            + " read-only); nothing changed"),
+    CLIENT_LIMIT(226, "the client holds as many references or subscriptions as one client may");
 
     private final int code;
     private final String meaning;

@@ -50,7 +50,7 @@ public enum Setting {
     REASONER_TIMEOUT_MS("reasoner_timeout_ms", Type.INTEGER, 30_000L,
             "time limit of one directive's reasoner work (then 211, timeout=true, within 1 s more) (0 = none)"),
     REFERENCES_PER_CLIENT("references_per_client", Type.INTEGER, 100L,
-            "most references one client_name may have made (LOAD, CREATE) and not dropped; then 225 (0 = no"
+            "most references one client_name may have made (LOAD, CREATE) and not dropped; then 226 (0 = no"
                     + " limit)"),
     MOUNT_LEASE_S("mount_lease_s", Type.INTEGER, 0L,
             "release a mount whose holder sent nothing for this long (0 = never)"),

@@ -31,12 +31,13 @@ public final class CommandContext {
     private final DirectiveLog log;
     private final boolean replaying;
     private final CommandTable commands;
+    private final Supplier<List<String>> stateDamage;
     private Supplier<Response> afterRelease;
     private final List<String> unknownNames = new ArrayList<>();
 
     public CommandContext(Directive directive, Reference reference, ReferenceRegistry references,
                           CoreConfig config, Rendering rendering, DirectiveLog log, boolean replaying,
-                          CommandTable commands) {
+                          CommandTable commands, Supplier<List<String>> stateDamage) {
         this.directive = directive;
         this.reference = reference;
         this.references = references;
@@ -45,6 +46,12 @@ public final class CommandContext {
         this.log = log;
         this.replaying = replaying;
         this.commands = commands;
+        this.stateDamage = stateDamage;
+    }
+
+    /** What the state directory could not bring back or cannot keep (GET STATE DAMAGE). */
+    public List<String> stateDamage() {
+        return stateDamage.get();
     }
 
     /** Every command the core answers (GET CATALOGUE lists them). */

@@ -59,6 +59,8 @@ public final class ReferenceCommands implements CommandGroup {
                 .global(c -> Response.ok(true, LoadProgress.running()));
         table.command("GET CATALOGUE").summary("the catalogue: commands (plugins' too), exit codes, settings; JSON")
                 .global(c -> Response.ok(true, List.of(Catalogue.json(c.commands()).toString())));
+        table.command("GET STATE DAMAGE").summary("what the state directory could not restore or cannot keep now,"
+                + " one JSON object each; empty when nothing").global(c -> Response.ok(true, c.stateDamage()));
         table.command("GET REF CLIENT").optional("reference name").emptySurplusIgnored()
                 .summary("the client that holds the mount, if any").global(c -> {
             String holder = named(c).mountedBy();
@@ -67,6 +69,9 @@ public final class ReferenceCommands implements CommandGroup {
         table.command("GET REF REVISION").optional("reference name")
                 .summary("the revision: how many changes it has acknowledged").global(c -> Response.ok(true,
                         List.of(Long.toString(named(c).revision()))));
+        table.command("GET REF DIGEST").optional("reference name")
+                .summary("a SHA-256 of its asserted axioms, annotations and imports: equal for equal ontologies")
+                .global(c -> Response.ok(true, List.of(digest(named(c), c.config().lockWaitMs()))));
         table.command("GET REF CHANGES").optional("reference name", "since revision", "client name")
                 .summary("its latest acknowledged changes after a revision, one JSON object each")
                 .global(ReferenceCommands::changes);
@@ -102,6 +107,32 @@ public final class ReferenceCommands implements CommandGroup {
             }
             return c.ok();
         });
+    }
+
+    /**
+     * What tells two states of an ontology apart without saving it: the sorted text of its
+     * axioms, annotations and imports, hashed (a fuzz run checks rejected directives with it).
+     */
+    private static String digest(Reference reference, long lockWaitMs) {
+        List<String> lines = reference.locked(lockWaitMs, r -> {
+            List<String> all = new java.util.ArrayList<>();
+            r.ontology().axioms().forEach(a -> all.add(a.toString()));
+            r.ontology().annotations().forEach(a -> all.add("annotation " + a));
+            r.ontology().importsDeclarations().forEach(i -> all.add("import " + i.getIRI()));
+            all.add("id " + r.ontology().getOntologyID());
+            return all;
+        });
+        java.util.Collections.sort(lines);
+        try {
+            java.security.MessageDigest sha = java.security.MessageDigest.getInstance("SHA-256");
+            for (String line : lines) {
+                sha.update(line.getBytes(java.nio.charset.StandardCharsets.UTF_8));
+                sha.update((byte) '\n');
+            }
+            return java.util.HexFormat.of().formatHex(sha.digest());
+        } catch (java.security.NoSuchAlgorithmException e) {
+            throw new IllegalStateException("SHA-256 is missing from this Java", e);
+        }
     }
 
     /** The reference a utility names in its first argument, or the directive's. */

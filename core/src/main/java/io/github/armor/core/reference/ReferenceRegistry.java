@@ -35,7 +35,7 @@ public final class ReferenceRegistry {
     /**
      * The reference under {@code name}, created by {@code creation} for {@code client} if there is
      * none. An existing reference is reused only when it came from the same source (ARMOR's rule
-     * for LOAD). 225, before any work, when the client already made {@code perClient} references
+     * for LOAD). 226, before any work, when the client already made {@code perClient} references
      * that are still loaded (0: no limit).
      */
     public synchronized Reference createOrReuse(String name, String source, String client, long perClient,
