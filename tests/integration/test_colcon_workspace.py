@@ -87,9 +87,11 @@ def test_colcon_builds_every_package_and_its_install_space_serves(tmp_path):
                 'print(armor_client.__file__, armor_service.__file__, armor_contract.__file__, '
                 'armor_msgs.__file__)"')
     assert where.returncode == 0, where.stderr
-    for path in where.stdout.split():
+    armor, core_jar, plugin_dirs, modules = where.stdout.splitlines()
+    assert armor == str(workspace / 'install' / 'armor_client' / 'bin' / 'armor'), where.stdout
+    assert os.path.isfile(core_jar), where.stdout
+    for path in (core_jar, plugin_dirs, *modules.split()):
         assert path.startswith(str(workspace / 'install')), where.stdout
-    assert os.path.isfile(where.stdout.split()[1]), where.stdout
 
     serve_log = tmp_path / 'armor_serve.log'
     with open(serve_log, 'w') as out:

@@ -97,12 +97,16 @@ def start_in_background(prepare: Optional[str] = None) -> None:
                      stderr=subprocess.DEVNULL, start_new_session=True, close_fds=True)
 
 
-def prepare(namespace: str) -> None:
-    """Have this environment's relay discover the ARMOR service of namespace now (start one)."""
+def prepare(namespace: str) -> bool:
+    """Have this environment's relay discover the ARMOR service of namespace now (start one).
+
+    Returns whether the relay had already proven that service's response path.
+    """
     try:
-        call({'prepare': namespace}, lambda state: None)
+        return call({'prepare': namespace}, lambda state: None)['ready']
     except RelayUnavailable:
         start_in_background(prepare=namespace)
+        return False
 
 
 def stop() -> bool:
@@ -171,7 +175,8 @@ class _Relay:
                     return
                 if 'prepare' in request:
                     self._start_preparing(request['prepare'])
-                    send({'preparing': request['prepare']})
+                    send({'preparing': request['prepare'],
+                          'ready': request['prepare'] in self._proven})
                     return
                 send(self._answer(request, send))
             except Exception as error:  # the relay outlives any one bad call
