@@ -525,7 +525,7 @@ if grep -qx 'BUILD_TESTING:BOOL=ON' "$BUILD/armor_cpp/CMakeCache.txt" 2>/dev/nul
 
 # Start every wanted step whose needs are done; on a failure start nothing more, let the
 # running steps end, and fail.
-declare -A STATE PID_STEP STARTED
+declare -A STATE PID_STEP
 T_SETUP=$EPOCHREALTIME
 failed=""
 running=0
@@ -537,13 +537,13 @@ while :; do
       for need in ${STEP_NEEDS[$s]}; do [ "${STATE[$need]:-}" = done ] || ready=""; done
       [ -n "$ready" ] || continue
       STEP="$s" "step_$s" &
-      PID_STEP[$!]=$s; STATE[$s]=running; STARTED[$s]=$EPOCHREALTIME; running=$((running + 1))
+      PID_STEP[$!]=$s; STATE[$s]=running; running=$((running + 1))
     done
   fi
   [ "$running" -gt 0 ] || break
   pid=""
   if wait -n -p pid; then rc=0; else rc=$?; fi
-  [ -n "$pid" ] || continue
+  [ -n "$pid" ] || die "lost track of the running steps"
   s="${PID_STEP[$pid]}"; running=$((running - 1))
   if [ "$rc" = 0 ]; then STATE[$s]=done; else STATE[$s]=failed; failed="$failed $s"; fi
 done
