@@ -44,8 +44,8 @@ export ROS_DOMAIN_ID="$domain"
 git clone -q --branch "$branch" "$repo" "$scratch/clone"
 cd "$scratch/clone"
 
-# run_until_ready LOG: make run in the background until its node says ARMOR ready; prints the
-# wall time. The node stays up (pid in $node).
+# run_until_ready LOG: make run in the background until its node says ARMOR ready; its wall
+# time goes to $ready_s. The node stays up (process group $node). Not in $(...): $node is needed.
 run_until_ready() {
   local started=$EPOCHREALTIME
   make run WEB_PORT="$port" > "$1" 2>&1 &
@@ -54,7 +54,7 @@ run_until_ready() {
     kill -0 "$node" 2>/dev/null || { cat "$1"; echo "cold_start: make run ended before ARMOR ready" >&2; exit 1; }
     sleep 0.1
   done
-  awk -v a="$started" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.1f", b - a }'
+  ready_s=$(awk -v a="$started" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.1f", b - a }')
 }
 first_call() {
   local started=$EPOCHREALTIME
@@ -64,7 +64,7 @@ first_call() {
 stop_node() { kill -INT -- "-$node"; wait "$node" || true; node=""; }
 
 echo "cold_start: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg) at the start"
-cold=$(run_until_ready "$scratch/cold.log")
+run_until_ready "$scratch/cold.log"; cold=$ready_s
 sleep 3  # a user switching to another terminal
 call=$(first_call "$scratch/call.log")
 stop_node
@@ -73,7 +73,7 @@ grep -E '^[a-z_]+: .* in [0-9.]+ s$|^setup: done' "$scratch/cold.log" | sed 's/^
 echo "cold: \"ARMOR ready\" after $cold s; first armor call 3 s after it: $call s"
 sed 's/^/  | /' "$scratch/call.log"
 (source install/setup.bash && python -c 'from armor_client.cli import call_relay; call_relay.stop()')
-warm=$(run_until_ready "$scratch/warm.log")
+run_until_ready "$scratch/warm.log"; warm=$ready_s
 call=$(first_call "$scratch/call.log")
 stop_node
 echo "warm: $(grep '^setup: done' "$scratch/warm.log"); \"ARMOR ready\" after $warm s; first armor call right after it: $call s"
