@@ -144,8 +144,8 @@ class _Waiting:
 
     def _say(self) -> None:
         if self._discovering:
-            print(f'armor call: waiting for {_where(self._args)}; giving up after '
-                  f'{self._args.wait:g} s', file=sys.stderr, flush=True)
+            print(f'armor call: waiting for {_where(self._args)} to be discovered (up to '
+                  f'{self._args.wait:g} s)', file=sys.stderr, flush=True)
         else:
             limit = (f'up to {self._args.timeout:g} s' if self._args.timeout
                      else 'without a time limit (--timeout sets one)')
