@@ -256,11 +256,14 @@ class ArmorService(Node):
                                f'got {value!r}')
 
 
-def main(args=None):
+def main(args=None, on_ready=None):
+    """Serve until interrupted; on_ready(node) is called once the node serves."""
     rclpy.init(args=args)
     node = None
     try:
         node = ArmorService()
+        if on_ready is not None:
+            on_ready(node)
         executor = MultiThreadedExecutor(num_threads=node.get_parameter('executor_threads').value)
         executor.add_node(node)
         executor.spin()

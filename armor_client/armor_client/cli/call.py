@@ -39,8 +39,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--namespace', default='', help='namespace of the ARMOR node')
     parser.add_argument('--timeout', type=float, default=None,
                         help='seconds to wait for the answer (default: no limit)')
-    parser.add_argument('--wait', type=float, default=5.0,
-                        help='seconds to wait for the service to appear (default: 5)')
+    parser.add_argument('--wait', type=float, default=call_relay.DEFAULT_WAIT_S,
+                        help='seconds to wait for the service to appear '
+                        f'(default: {call_relay.DEFAULT_WAIT_S:g})')
     parser.add_argument('--json', action='store_true', help='print the whole response as JSON')
     parser.add_argument('--no-relay', action='store_true',
                         help='start ROS in this process instead of using the background relay')
@@ -77,16 +78,22 @@ def _use_relay(args) -> bool:
 
 
 def _relayed(fields: dict, args, waiting: '_Waiting'):
-    """The relay's answer, or None when no relay took it (one is then started for next time)."""
+    """The relay's answer, or None when no relay took it."""
+    request = {'directive': fields, 'namespace': args.namespace, 'wait_s': args.wait,
+               'timeout_s': args.timeout}
     try:
-        return call_relay.call({'directive': fields, 'namespace': args.namespace,
-                                'wait_s': args.wait, 'timeout_s': args.timeout},
-                               on_state=waiting.state)
+        return call_relay.call(request, on_state=waiting.state)
     except call_relay.RelayRefused as refusal:
         print(f'armor call: {refusal}', file=sys.stderr)
         return None
     except call_relay.RelayUnavailable:
-        call_relay.start_in_background()
+        pass
+    # No relay yet: start one and go through it. Discovering the service here as well would
+    # do the same work twice on the same cores.
+    call_relay.start_in_background(prepare=args.namespace)
+    try:
+        return call_relay.call(request, on_state=waiting.state, connect_s=2.0)
+    except call_relay.RelayUnavailable:
         return None
 
 
@@ -140,8 +147,8 @@ class _Waiting:
 
     def _say(self) -> None:
         if self._discovering:
-            print(f'armor call: waiting for {_where(self._args)}; giving up after '
-                  f'{self._args.wait:g} s', file=sys.stderr, flush=True)
+            print(f'armor call: waiting for {_where(self._args)} to be discovered (up to '
+                  f'{self._args.wait:g} s)', file=sys.stderr, flush=True)
         else:
             limit = (f'up to {self._args.timeout:g} s' if self._args.timeout
                      else 'without a time limit (--timeout sets one)')

@@ -10,7 +10,9 @@ it over a Unix socket and get the answer back without starting ROS at all.
 One relay serves one ROS environment: its socket name is a hash of every ROS_*, RMW_* and
 DDS vendor variable, so a call with another ROS_DOMAIN_ID (or RMW, discovery range...) gets a
 relay of its own. It exits after ARMOR_CALL_RELAY_IDLE_S seconds without a call (default 600).
-ARMOR_CALL_RELAY=0 turns it off.
+ARMOR_CALL_RELAY=0 turns it off. ``armor serve`` starts one as soon as its node is ready,
+prepared for that node (discovered and its response path proven), so that even the first
+``armor call`` takes a fraction of a second.
 
 Protocol: one JSON request line per connection; answers are JSON lines, ``{"state":
 "discovering"}`` while the service has not answered this relay yet, then ``{"response": {...}}``
@@ -37,6 +39,9 @@ from typing import Any, Callable, Dict, Optional, Set, Tuple
 
 _ENV_PREFIXES = ('ROS_', 'RMW_', 'FASTDDS', 'FASTRTPS', 'CYCLONEDDS', 'CONNEXT', 'ZENOH')
 _RESPONSE_FIELDS = ('success', 'timeout', 'exit_code', 'error_description', 'is_consistent')
+# How long a call waits for the service to appear unless told (armor call --wait): the relay
+# keeps one transport per namespace and wait, and prepares this one.
+DEFAULT_WAIT_S = 5.0
 
 
 def enabled() -> bool:
@@ -89,22 +94,28 @@ def _private_folder(path: str) -> str:
     return path
 
 
-def call(request: dict, on_state: Callable[[str], None]) -> dict:
+def call(request: dict, on_state: Callable[[str], None], connect_s: float = 0.0) -> dict:
     """Send one request to the relay and return its final answer line.
 
+    connect_s: how long to keep trying to reach a relay that is starting.
     Raises RelayUnavailable when no relay took the request, so nothing was sent to ARMOR.
     """
     path = socket_path()
     _refuse_foreign_socket(path)
-    connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
-    try:
-        connection.settimeout(0.5)
-        connection.connect(path)
-        connection.sendall(json.dumps(request).encode() + b'\n')
-        connection.settimeout(None)
-    except OSError as error:
-        connection.close()
-        raise RelayUnavailable(str(error)) from error
+    deadline = time.monotonic() + connect_s
+    while True:
+        connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        try:
+            connection.settimeout(0.5)
+            connection.connect(path)
+            connection.sendall(json.dumps(request).encode() + b'\n')
+            connection.settimeout(None)
+            break
+        except OSError as error:
+            connection.close()
+            if time.monotonic() >= deadline:
+                raise RelayUnavailable(str(error)) from error
+            time.sleep(0.02)
     with connection, connection.makefile('rb') as lines:
         for line in lines:
             message = json.loads(line)
@@ -115,11 +126,27 @@ def call(request: dict, on_state: Callable[[str], None]) -> dict:
     return {'error': 'the call relay ended before answering; the directive may have run'}
 
 
-def start_in_background() -> None:
-    """Start a relay for this environment, detached; it gives way if another one is up."""
-    subprocess.Popen([sys.executable, '-m', 'armor_client.cli.call_relay', socket_path()],
+def start_in_background(prepare: Optional[str] = None) -> None:
+    """Start a relay for this environment, detached; it gives way if another one is up.
+
+    prepare: a namespace whose ARMOR service the relay discovers right away, before any call.
+    """
+    subprocess.Popen([sys.executable, '-m', 'armor_client.cli.call_relay', socket_path()]
+                     + ([] if prepare is None else ['--prepare', prepare]),
                      stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
                      stderr=subprocess.DEVNULL, start_new_session=True, close_fds=True)
+
+
+def prepare(namespace: str) -> bool:
+    """Have this environment's relay discover the ARMOR service of namespace now (start one).
+
+    Returns whether the relay had already proven that service's response path.
+    """
+    try:
+        return call({'prepare': namespace}, lambda state: None)['ready']
+    except RelayUnavailable:
+        start_in_background(prepare=namespace)
+        return False
 
 
 def stop() -> bool:
@@ -131,8 +158,9 @@ def stop() -> bool:
 
 
 class _Relay:
-    def __init__(self, path: str, idle_s: float):
+    def __init__(self, path: str, idle_s: float, prepare: Optional[str] = None):
         self._path = path
+        self._prepare_first = prepare
         self._idle_s = idle_s
         self._last = time.monotonic()
         self._transports: Dict[Tuple[str, float], Any] = {}
@@ -150,6 +178,8 @@ class _Relay:
         rclpy.init(signal_handler_options=SignalHandlerOptions.NO)
         try:
             threading.Thread(target=self._exit_when_idle, daemon=True).start()
+            if self._prepare_first is not None:
+                self._start_preparing(self._prepare_first)
             while True:
                 connection, _ = self._server.accept()
                 threading.Thread(target=self._handle, args=(connection,), daemon=True).start()
@@ -183,6 +213,11 @@ class _Relay:
                     self._close_socket()
                     send({'stopped': True})
                     return
+                if 'prepare' in request:
+                    self._start_preparing(request['prepare'])
+                    send({'preparing': request['prepare'],
+                          'ready': request['prepare'] in self._proven})
+                    return
                 send(self._answer(request, send))
             except Exception as error:  # the relay outlives any one bad call
                 try:
@@ -213,6 +248,26 @@ class _Relay:
         answer['sparql_queried_objects'] = [{'key': i.key, 'value': i.value}
                                             for i in response.sparql_queried_objects]
         return {'response': answer}
+
+    def _start_preparing(self, namespace: str) -> None:
+        if namespace not in self._proven:
+            threading.Thread(target=self._prepare, args=(namespace,), daemon=True).start()
+
+    def _prepare(self, namespace: str) -> None:
+        """Discover the service of namespace and prove its response path, as a call would.
+
+        The node may still be starting: tries until it answers or the relay ends.
+        """
+        from armor_client.errors import ArmorServiceCallError
+        from armor_client.transport import directive
+        transport = self._transport(namespace, DEFAULT_WAIT_S)
+        while self._server is not None and namespace not in self._proven:
+            try:
+                transport.call(directive('armor_cli', '', 'GET', 'ALL', 'REFS'),
+                               timeout_s=DEFAULT_WAIT_S)
+                self._proven.add(namespace)
+            except ArmorServiceCallError:
+                pass
 
     def _exit_when_idle(self) -> None:
         while self._server is not None:
@@ -271,8 +326,14 @@ def _bind(path: str) -> Optional[socket.socket]:
 
 
 def main() -> None:
-    path = sys.argv[1] if len(sys.argv) > 1 else socket_path()
-    _Relay(path, float(os.environ.get('ARMOR_CALL_RELAY_IDLE_S', '600'))).serve()
+    arguments = sys.argv[1:]
+    namespace = None
+    if '--prepare' in arguments:
+        at = arguments.index('--prepare')
+        namespace = arguments[at + 1]
+        del arguments[at:at + 2]
+    path = arguments[0] if arguments else socket_path()
+    _Relay(path, float(os.environ.get('ARMOR_CALL_RELAY_IDLE_S', '600')), namespace).serve()
 
 
 if __name__ == '__main__':
