@@ -154,13 +154,13 @@ LIBFAKETIME = '/usr/lib/x86_64-linux-gnu/faketime/libfaketime.so.1'
 def test_clock_jumps_leave_mount_leases_and_checkpoints_on_time(tmp_path):
     """The system clock stepping back an hour and forward a day under the node and the core.
 
-    libfaketime (installed by make setup) moves the wall clock of both processes while they run;
-    the monotonic clock is left alone, as a real clock step leaves it. Durations (a mount's lease,
-    the checkpoint interval) must not stretch or shrink with the wall clock.
+    libfaketime (installed by make test's set-up) moves the wall clock of both processes while
+    they run; the monotonic clock is left alone, as a real clock step leaves it. Durations (a
+    mount's lease, the checkpoint interval) must not stretch or shrink with the wall clock.
     """
     import os
     from armor_client import ArmorTransport
-    assert os.path.exists(LIBFAKETIME), 'libfaketime is missing: run make setup'
+    assert os.path.exists(LIBFAKETIME), 'no libfaketime: bash tools/setup.sh test installs it'
     offset = tmp_path / 'faketime'
     offset.write_text('+0\n')
     env = dict(os.environ, LD_PRELOAD=LIBFAKETIME, FAKETIME_TIMESTAMP_FILE=str(offset),
