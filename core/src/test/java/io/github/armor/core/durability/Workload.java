@@ -24,7 +24,7 @@ import java.util.List;
 final class Workload {
     static final Path ONTOLOGIES = Path.of("..", "ontologies").toAbsolutePath().normalize();
     static final String ROBOTICS = ONTOLOGIES.resolve("robotics.owl").toString();
-    // Where digests SAVE (an allowed directory of every workload core).
+    // Where digests SAVE (the one writable directory of every workload core).
     private static final Path SAVES;
 
     static {
@@ -82,7 +82,8 @@ final class Workload {
     static CoreConfig config(Path stateDir, int checkpointEvery) {
         return new CoreConfig(true, "HERMIT", List.of(ONTOLOGIES, SAVES), false, 30_000, 0, 0,
                 stateDir == null ? CoreConfig.Durability.NONE
-                        : new CoreConfig.Durability(stateDir, true, true, checkpointEvery, 3600));
+                        : new CoreConfig.Durability(stateDir, true, true, checkpointEvery, 3600))
+                .withWriting(CoreConfig.Writing.into(SAVES));
     }
 
     /** A core on {@code stateDir} whose files go through {@code storage}, restored. */
