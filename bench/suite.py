@@ -9,6 +9,10 @@
 with the environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
 (query_latency.py, batch_throughput.py, reasoning_cycle.py, robot_speed.py,
 core_profile.py, lubm.py, default_clients.py, real_shapes.py).
+
+Every figure stands on checked answers (bench/answers.py): a benchmark stops at a wrong answer
+of ARMOR's, or records it where it also measures alternatives; the suite then writes the report
+and fails, naming each ARMOR figure whose answers were wrong.
 """
 
 import argparse
@@ -22,6 +26,7 @@ import sys
 import tempfile
 import time
 
+from answers import wrong_in
 from harness import REPO, SCALES, CoreSnapshot
 import batch_throughput
 import core_profile
@@ -149,7 +154,10 @@ def main():
                         default=os.environ.get('ARMOR_BENCH_SCALE', 'full'))
     parser.add_argument('--report', type=pathlib.Path, default=REPO / 'bench' / 'REPORT.md')
     options = parser.parse_args()
-    run(options.scale, options.report)
+    wrong = wrong_in(run(options.scale, options.report))
+    if wrong:
+        sys.exit('wrong answers behind these figures:\n  ' + '\n  '.join(wrong))
+    print('every checked answer was right', file=sys.stderr)
 
 
 if __name__ == '__main__':

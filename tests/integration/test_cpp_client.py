@@ -40,7 +40,10 @@ def live_cases():
 
 @pytest.fixture(scope='module')
 def live_results(armor, armor_node, tmp_path_factory):
-    """Run the live test once: case -> its failure messages ('' when it passed)."""
+    """Run the live test once: case -> its failure messages ('' when it passed).
+
+    A case that skipped itself (GTEST_SKIP) did not pass: its message says it was skipped.
+    """
     report = tmp_path_factory.mktemp('gtest') / 'live.xml'
     env = {**os.environ, 'ARMOR_TEST_ONTOLOGY': str(ONTOLOGIES / 'robotics.owl'),
            'ARMOR_TEST_SCRATCH': str(armor_node.scratch)}
@@ -50,6 +53,9 @@ def live_results(armor, armor_node, tmp_path_factory):
     results = {}
     for case in ET.parse(report).getroot().iter('testcase'):
         failures = [failure.get('message', '') for failure in case.iter('failure')]
+        failures += [f'skipped: {skip.get("message", "")}' for skip in case.iter('skipped')]
+        if case.get('result') == 'skipped' and not failures:
+            failures.append('skipped')
         results[f'{case.get("classname")}.{case.get("name")}'] = '\n'.join(failures)
     return results
 

@@ -7,6 +7,7 @@ made by a ROS client while the page stays open: it must show them without being 
 Every test leaves a screenshot in build/test-artifacts/web/.
 """
 
+import base64
 import json
 import pathlib
 import urllib.error
@@ -384,7 +385,109 @@ def test_the_web_view_is_off_by_default(armor_node, armor):
     assert 'Web view' not in armor_node.log()
 
 
-def test_the_screenshot_in_the_readme_exists():
+SCREENSHOT = REPO / 'docs' / 'images' / 'web-view.png'
+# Parts of the page that look the same on every render of the README's scene (the rest shows
+# times or a layout): the header, the summary's first line, the reference's card without its
+# time, the tabs (Graph chosen), the graph's controls and its note (5 individuals, 8 links).
+STEADY_PARTS = {'header': 'header', 'summary': '#summary', 'card': '.card[data-name="robotics"]',
+                'tabs': '.tabs', 'controls': '#graph-form', 'note': '#graph-note'}
+COMPARE = """
+async ([stored, fresh, boxes, palette, canvas]) => {
+  const pixels = async (source) => {
+    const image = new Image();
+    image.src = source;
+    await image.decode();
+    const drawn = document.createElement('canvas');
+    drawn.width = image.width;
+    drawn.height = image.height;
+    const context = drawn.getContext('2d');
+    context.drawImage(image, 0, 0);
+    return {width: image.width, height: image.height,
+            data: context.getImageData(0, 0, image.width, image.height).data};
+  };
+  const [a, b] = [await pixels(stored), await pixels(fresh)];
+  // Per box: pixels that differ by more than a quarter of the range in some channel.
+  const differing = {};
+  for (const [name, box] of Object.entries(boxes)) {
+    let count = 0;
+    for (let y = box.y; y < box.y + box.height; y++) {
+      for (let x = box.x; x < box.x + box.width; x++) {
+        const i = 4 * (y * a.width + x);
+        if ([0, 1, 2].some(c => Math.abs(a.data[i + c] - b.data[i + c]) > 64)) count++;
+      }
+    }
+    differing[name] = count;
+  }
+  // In the graph: each node colour's share of the pixels painted in a node colour.
+  const shares = (image) => {
+    const counts = palette.map(() => 0);
+    for (let y = canvas.y; y < canvas.y + canvas.height; y++) {
+      for (let x = canvas.x; x < canvas.x + canvas.width; x++) {
+        const i = 4 * (y * image.width + x);
+        const k = palette.findIndex(([r, g, bl]) => Math.abs(image.data[i] - r) < 3
+            && Math.abs(image.data[i + 1] - g) < 3 && Math.abs(image.data[i + 2] - bl) < 3);
+        if (k >= 0) counts[k]++;
+      }
+    }
+    const total = counts.reduce((x, y) => x + y, 0) || 1;
+    return counts.map(n => n / total);
+  };
+  return {stored: [a.width, a.height], fresh: [b.width, b.height], differing,
+          storedShares: shares(a), freshShares: shares(b)};
+}
+"""
+
+
+def _data_url(png: bytes) -> str:
+    return 'data:image/png;base64,' + base64.b64encode(png).decode('ascii')
+
+
+def test_the_readme_screenshot_shows_the_page_it_claims(tmp_path, browser):
+    """The README's picture is the web view's graph of the robotics example (Openllet) after
+    alice moved into the bedroom: the same scene rendered afresh (the page open, then the move
+    over ROS, as a user would see it) has its size, the same steady parts pixel for pixel, and
+    its nodes in the same colours in the same shares (the layout itself varies)."""
     readme = (REPO / 'README.md').read_text()
     assert '](docs/images/web-view.png)' in readme
-    assert pathlib.Path(REPO / 'docs' / 'images' / 'web-view.png').stat().st_size > 10_000
+    assert 'after alice moved into the bedroom' in readme
+    port = free_port()
+    node = start_node(tmp_path, '-p', f'web_port:={port}', namespace='/web_readme')
+    node.armor = ArmorTransport(namespace='/web_readme', service_wait_s=90.0)
+    context = None
+    try:
+        assert call(node, 'robotics', 'DROP').success
+        load(node, 'robotics')
+        context = browser.new_context(viewport={'width': 1280, 'height': 800})
+        page = context.new_page()
+        page.goto(f'http://127.0.0.1:{port}/#/robotics/graph')
+        expect(page.locator('#graph-note')).to_contain_text('5 individuals, 6 links')
+        assert call(node, 'robotics', 'ADD OBJECTPROP IND', 'isIn', 'alice', 'bedroom').success
+        expect(page.locator('#graph-note')).to_contain_text('5 individuals, 8 links',
+                                                            timeout=SHOWN_WITHIN_MS)
+        page.wait_for_function('() => window.armorWeb.settled()')
+        page.locator('#graph-canvas').hover(position={'x': 1, 'y': 1})  # no hover effect
+        fresh = page.screenshot()
+        ARTIFACTS.mkdir(parents=True, exist_ok=True)
+        (ARTIFACTS / 'readme-scene-fresh.png').write_bytes(fresh)
+        boxes = {}
+        for name, selector in STEADY_PARTS.items():
+            box = page.locator(selector).first.bounding_box()
+            boxes[name] = {'x': round(box['x']), 'y': round(box['y']),
+                           'width': round(box['width']), 'height': round(box['height'])}
+        boxes['summary']['height'] = 20  # its first line: the second holds the reasoning time
+        boxes['card']['height'] -= 22  # without the row of the reasoning time
+        canvas = {k: round(v) for k, v in page.locator('#graph-canvas').bounding_box().items()}
+        canvas['height'] = 800 - canvas['y']
+        palette = page.evaluate(
+            'PALETTE.map(c => [1, 3, 5].map(i => parseInt(c.slice(i, i + 2), 16)))')
+        seen = page.evaluate(COMPARE, [_data_url(SCREENSHOT.read_bytes()), _data_url(fresh),
+                                       boxes, palette, canvas])
+    finally:
+        if context is not None:
+            context.close()
+        node.armor.close()
+        node.stop()
+    assert seen['stored'] == seen['fresh'] == [1280, 800]
+    assert all(count <= 3 for count in seen['differing'].values()), seen['differing']
+    for stored_share, fresh_share in zip(seen['storedShares'], seen['freshShares']):
+        assert abs(stored_share - fresh_share) < 0.05, (seen['storedShares'], seen['freshShares'])
