@@ -27,14 +27,24 @@ public final class AllowedPaths {
         this.roots = List.copyOf(roots);
     }
 
-    /** A path a client sent, made absolute and confined; 213 when it leads outside. */
+    /** A path a client sent, absolute, confined; 213 when it is relative or leads outside. */
     public Path check(String clientPath) {
         if (clientPath == null || clientPath.isBlank()) {
             throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "empty path");
         }
         Path target;
         try {
-            target = inside(Path.of(clientPath.trim())).orElse(null);
+            Path given = Path.of(clientPath.trim());
+            if (!given.isAbsolute()) {
+                // Relative to what? The node's folder is not the caller's: the clients make paths absolute
+                // against the caller's (docs/commands.md#paths), and a raw directive must do the same.
+                throw new ArmorException(ExitCode.PATH_NOT_ALLOWED, "relative path '" + clientPath + "' refused:"
+                        + " send an absolute path (the node would have taken it as " + given.toAbsolutePath()
+                        + ", in its own working directory, not the caller's)");
+            }
+            target = inside(given).orElse(null);
+        } catch (ArmorException e) {
+            throw e;
         } catch (IOException | RuntimeException e) {
             throw new ArmorException(ExitCode.PATH_NOT_ALLOWED, "path '" + clientPath + "' cannot be used: " + e);
         }
