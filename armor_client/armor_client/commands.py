@@ -143,8 +143,11 @@ def as_typed(words: Sequence[str]) -> Tuple[Tuple[str, str, str], List[str]]:
 
 
 def _misspelt_spec(typed: Sequence[str], command: Command, arguments: Sequence[str]) -> bool:
-    """Whether the first argument is rather a misspelt spec: the command cannot take the
-    arguments as they are, and that word is close to a spec that can follow."""
+    """Whether the first argument is rather a misspelt spec.
+
+    So it is when the command cannot take the arguments as they are, and that word is close
+    to a spec that can follow.
+    """
     count = len(arguments)
     takes = len(command.required) <= count and (
         command.variadic or count <= len(command.required) + len(command.optional))

@@ -16,9 +16,10 @@ from armor_contract.catalogue import Command
 
 
 def absolute(path: str, cwd: Optional[str] = None) -> str:
-    """A path argument as it is sent: relative ones joined to ``cwd`` (default: the working directory).
+    """A path argument as it is sent: a relative one joined to ``cwd``.
 
-    ".." is left for the node to apply after following links, as the kernel does.
+    ``cwd`` is by default this process's working directory. ".." is left for the node to
+    apply after following links, as the kernel does.
 
     Args:
         path: the path as the caller wrote it ('' stays '': "the file it was loaded from").

@@ -38,8 +38,9 @@ class PlannerBridge:
 
         Args:
             mapping: a mapping file (a relative path is the caller's; the node reads it inside
-                its allowed_dirs), its YAML or JSON text, or a dict: which classes become types and predicates, which
-                properties predicates and fluents, and the goal (docs/pddl.md).
+                its allowed_dirs), its YAML or JSON text, or a dict: which classes become types
+                and predicates, which properties predicates and fluents, and the goal
+                (docs/pddl.md).
 
         Returns:
             The problem's text; the same state gives the same bytes.
@@ -55,6 +56,5 @@ class PlannerBridge:
             mapping: as for pddl_problem.
             path: where (a relative path is the caller's), inside the node's allowed_dirs.
         """
-        return self._execute(('SAVE', 'PDDL', 'PROBLEM'), [mapping_argument(mapping),
-                                                            absolute(path)],
-                             lambda response: None)
+        arguments = [mapping_argument(mapping), absolute(path)]
+        return self._execute(('SAVE', 'PDDL', 'PROBLEM'), arguments, lambda response: None)

@@ -57,7 +57,7 @@ class Command:
 
     @property
     def path_positions(self) -> Tuple[int, ...]:
-        """Which arguments name a file on the node's machine: those with the word path in their name."""
+        """Which arguments name a file on the node's machine: those named with the word path."""
         return tuple(i for i, name in enumerate(self.required + self.optional)
                      if 'path' in name.split())
 

@@ -105,7 +105,7 @@ class ArmorService(Node):
         return response
 
     def _answered(self, requests) -> None:
-        """Tell the web view, whose recent-directives list follows every directive, not only changes."""
+        """Tell the web view: its list of recent directives follows them all, not changes only."""
         if self._web_view is not None:
             self._web_view.directives_answered([r.reference_name for r in requests])
 

@@ -8,8 +8,7 @@ when the directive succeeded, 1 when it failed (its code and description go to s
 when the command line is wrong and 3 when the service could not be reached. A relative path
 argument (LOAD FILE, SAVE, a PDDL mapping...) is this directory's: it is sent made absolute.
 JSON answers are indented; --raw prints the results alone, as they came (no "# exit_code"
-line), so that an answer can be saved as a file or read by a script.
-Examples:
+line), so that an answer can be saved as a file or read by a script. Examples:
   armor call robotics QUERY IND CLASS -- OccupiedRoom
   armor call robotics ADD OBJECTPROP IND -- isIn robot1 bedroom
   armor call - GET ALL REFS
@@ -193,7 +192,7 @@ def print_response(response, as_json: bool = False, raw: bool = False) -> None:
 
 
 def _readable(item: str) -> str:
-    """A JSON answer (GET CATALOGUE's, GET REF CHANGES') indented over lines; other text as it is."""
+    """A JSON answer (GET CATALOGUE's, GET REF CHANGES') indented; other text as it is."""
     if not item.startswith(('{', '[')):
         return item
     try:

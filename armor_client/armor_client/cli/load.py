@@ -3,8 +3,9 @@
 
   armor load REF PATH [--reasoner PELLET] [--iri IRI] [--mount] ...
 
-PATH is made absolute against the current directory, as every client's paths are; the node reads only inside its
-allowed_dirs. Loading a name that is loaded from the same file reuses it. Examples:
+PATH is made absolute against the current directory, as every client's paths are; the node
+reads only inside its allowed_dirs. Loading a name that is loaded from the same file reuses
+it. Examples:
   armor load map ontologies/robotics.owl --reasoner PELLET
   armor load web https://example.org/onto.owl --web
 Exit status: 0 loaded, 1 refused, 2 usage error, 3 no service.

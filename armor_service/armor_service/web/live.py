@@ -7,8 +7,9 @@ client, directives, consistency) on the node's connection; CoreProcess hands eac
 (it then refetches what it shows), not each change: so the hub keeps only the latest revision
 and consistency per reference, and how many directives the node answered on each (queries
 too: the recent-directives list moves with them), and sends every page that whole table, at
-most once per ``COALESCE_S``. A page that reads slowly is sent the newest table when it is ready for one,
-never a queue of old ones: memory stays constant however fast the robot changes its knowledge.
+most once per ``COALESCE_S``. A page that reads slowly is sent the newest table when it is
+ready for one, never a queue of old ones: memory stays constant however fast the robot
+changes its knowledge.
 """
 
 import asyncio
