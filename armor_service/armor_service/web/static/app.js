@@ -6,6 +6,8 @@
 
 const TABS = ['graph', 'classes', 'individuals', 'query', 'recent'];
 const PAGE_SIZE = 50;
+const PALETTE = ['#4e79a7', '#f28e2b', '#59a14f', '#e15759', '#76b7b2', '#edc948', '#b07aa1',
+  '#ff9da7', '#9c755f', '#2f6690', '#c0392b', '#17becf'];
 // Above this many nodes even the layout worker would take minutes: a grid instead.
 const FORCE_LAYOUT_MAX_NODES = 2000;
 
@@ -23,6 +25,7 @@ const state = {
   closedClasses: new Set(),
   graphChoice: null,   // {properties: [iri] | null for all, class, focus, limit}
   properties: [],      // the selected reference's object properties
+  classIndex: new Map(),  // its classes' places in their list sorted by name (colourOf)
   fetchedAt: 0,
 };
 
@@ -89,17 +92,26 @@ function clock(ms) {
 }
 
 /**
- * A type's colour, from its name alone (FNV-1a hash): the same on every page, in every state
- * of the reference and in the README's picture, whichever types happen to be on screen. The
- * hue and one of three lightnesses come from the hash, so that two types rarely look alike.
+ * A type's colour: from the class's place among the reference's classes sorted by name, not
+ * from what happens to be on screen, so that it is the same on every page, in every state of
+ * the individuals and in the README's picture. The first classes take the palette's colours,
+ * all different; beyond it, hues a golden angle apart. A label of several types takes the
+ * first one's; no class (owl:Thing) is grey.
  */
-function colourOf(name) {
-  let hash = 0x811c9dc5;
-  for (const character of name) {
-    hash = Math.imul(hash ^ character.codePointAt(0), 0x01000193) >>> 0;
-  }
-  const lightness = [38, 50, 62][Math.floor(hash / 360) % 3];
-  return `hsl(${hash % 360}, 60%, ${lightness}%)`;
+function colourOf(types) {
+  const index = state.classIndex.get(types.split(', ')[0]);
+  if (index === undefined) return '#98a2b3';
+  if (index < PALETTE.length) return PALETTE[index];
+  return `hsl(${Math.round((index * 137.508) % 360)}, 55%, ${[45, 32, 60][index % 3]}%)`;
+}
+
+/** The reference's classes by name, sorted: the colours of the graph's types (colourOf). */
+async function loadClassIndex(shown) {
+  const hierarchy = await api(referencePath('/classes'));
+  const names = [...new Set(hierarchy.classes.map((owlClass) => owlClass.name))].sort();
+  // A type the hierarchy leaves out gets a place after them, and is not asked for again.
+  names.push(...[...shown].filter((name) => !names.includes(name)).sort());
+  state.classIndex = new Map(names.map((name, index) => [name, index]));
 }
 
 /** Axioms as the core writes them, with <full IRIs> shortened to their names for reading. */
@@ -272,6 +284,7 @@ function select(name, tab) {
     state.closedClasses = new Set();
     state.graphChoice = null;
     state.properties = [];
+    state.classIndex = new Map();
     fill($('#class-detail'), el('p', {className: 'muted', text: 'Choose a class.'}));
     fill($('#individual-detail'), el('p', {className: 'muted', text: 'Choose an individual.'}));
     $('#inconsistency').hidden = true;
@@ -384,6 +397,15 @@ const graphRefresher = new Refresher(async () => {
     return;
   }
   if (name !== state.selected) return;
+  const shown = new Set(data.nodes.filter((node) => node.types.length).map((node) => node.types[0].name));
+  if ([...shown].some((type) => !state.classIndex.has(type))) {
+    try {
+      await loadClassIndex(shown);  // first time, or a class new to the schema
+    } catch (error) {
+      // grey nodes until the next refresh: the graph itself is fine
+    }
+    if (name !== state.selected) return;
+  }
   renderGraph(data);
 });
 
@@ -425,6 +447,8 @@ function renderGraph(data) {
         // Edge labels level and on a background of their own, beside the line rather than on it.
         {selector: 'edge', style: {
           'width': 3, 'line-color': '#98a2b3', 'line-style': 'data(line)', 'curve-style': 'bezier',
+          // Links both ways between two individuals bow apart far enough for both labels.
+          'control-point-step-size': 70,
           'target-arrow-shape': 'data(arrow)', 'target-arrow-color': '#98a2b3', 'label': 'data(label)',
           'font-size': LABEL_PX.edge, 'color': '#344054', 'text-rotation': 'none',
           'text-background-color': '#ffffff', 'text-background-opacity': 0.85,
