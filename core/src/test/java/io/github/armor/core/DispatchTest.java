@@ -26,6 +26,14 @@ class DispatchTest {
         return new CoreFixture(scratch);
     }
 
+    /** A core with strict_names on, robotics.owl loaded as "map". */
+    private static CoreFixture strictNames() {
+        CoreFixture strict = new CoreFixture(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES), false,
+                30_000, 0, 0, CoreConfig.Durability.NONE, new CoreConfig.Safeguards(30_000, false, false, true)));
+        strict.loadRobotics("map", "HERMIT", false);
+        return strict;
+    }
+
     @Test
     void missingNamesAndUnknownCommandsGetTheirCodes() {
         CoreFixture f = fixture();
@@ -87,9 +95,7 @@ class DispatchTest {
         assertEquals("new to the reference: individual 'alise' (did you mean alice?)", added.errorDescription());
         assertEquals("", f.ok("map", "QUERY IND CLASS", "Room").errorDescription());
 
-        CoreFixture strict = new CoreFixture(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES), false,
-                30_000, 0, 0, CoreConfig.Durability.NONE, new CoreConfig.Safeguards(30_000, false, false, true)));
-        strict.loadRobotics("map", "HERMIT", false);
+        CoreFixture strict = strictNames();
         Response refused = strict.run("map", "QUERY IND CLASS", "Rooom");
         assertFails(refused, 224);
         assertTrue(refused.errorDescription().contains("class 'Rooom' (did you mean Room?)"), refused.errorDescription());
@@ -122,9 +128,7 @@ class DispatchTest {
         String noSuggestion = f.run("map", "QUERY IND DL", "zzzzqq some Room").errorDescription();
         assertTrue(noSuggestion.contains("does not know object property 'zzzzqq';"), noSuggestion);
 
-        CoreFixture strict = new CoreFixture(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES), false,
-                30_000, 0, 0, CoreConfig.Durability.NONE, new CoreConfig.Safeguards(30_000, false, false, true)));
-        strict.loadRobotics("map", "HERMIT", false);
+        CoreFixture strict = strictNames();
         Response refused = strict.run("map", "QUERY IND DL", "Agent and (isIn some Rom)");
         assertFails(refused, 224);
         assertTrue(refused.errorDescription().contains("class 'Rom' (did you mean Room?)"), refused.errorDescription());
