@@ -1016,7 +1016,8 @@ class ReferenceCommands:
         """Write the ontology to a file on the node's machine (SAVE / SAVE INFERENCE).
 
         Args:
-            path: where ('' = the file it was loaded from); inside the node's allowed_dirs.
+            path: where ('' = the file it was loaded from); a relative path is the
+                caller's (made absolute here); inside the node's allowed_dirs.
             format: rdfxml, owlxml, turtle, functional or manchester ('' = as loaded).
             inferences: also write the inferred types, property values and hierarchy (the
                 live ontology does not change).
@@ -1087,7 +1088,8 @@ class SessionCommands:
 
         Args:
             name: the reference name.
-            path: the file, as the node sees it (inside its allowed_dirs).
+            path: the file on the node's machine, inside its allowed_dirs; a relative path
+                is the caller's (made absolute here).
             iri: the ontology IRI that plain names resolve against ('' = the file's own).
             reasoner: HERMIT, PELLET, JFACT, ELK or '' for the node's default.
             buffered_manipulation: queue changes until apply() or reason().
@@ -1245,7 +1247,8 @@ class SessionCommands:
         """Log directives to a file on the node's machine, or stop (LOG FILE ON/OFF).
 
         Args:
-            path: the log file (inside the node's allowed_dirs); None stops logging to a file.
+            path: the log file (inside the node's allowed_dirs; a relative path is the
+                caller's); None stops logging to a file.
         """
         if path is None:
             return self._session('', ('LOG', 'FILE', 'OFF'), [], Answers.nothing)

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <optional>
@@ -226,6 +227,31 @@ TEST_F(LiveReference, SavesToAFileTheNodeWrites)
   text << saved.rdbuf();
   EXPECT_NE(text.str().find("@prefix"), std::string::npos);
   EXPECT_NE(text.str().find("bob"), std::string::npos);
+}
+
+// Issue 35 item 1: a relative path is this process's, not the node's (whose working
+// directory is ARMOR_TEST_SCRATCH itself): the client sends it made absolute.
+TEST_F(LiveReference, RelativePathsAreTheCallers)
+{
+  const std::filesystem::path folder =
+    std::filesystem::path(environment("ARMOR_TEST_SCRATCH")) / "cpp_caller";
+  std::filesystem::create_directories(folder);
+  std::filesystem::copy_file(environment("ARMOR_TEST_ONTOLOGY"), folder / "relative.owl",
+    std::filesystem::copy_options::overwrite_existing);
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(folder);
+  try {
+    armor::Reference relative = armor_.load_file(name_ + "_relative", "relative.owl");
+    relative.save("cpp_relative.ttl", "turtle");
+    relative.drop();
+  } catch (...) {
+    std::filesystem::current_path(before);
+    throw;
+  }
+  std::filesystem::current_path(before);
+  EXPECT_TRUE(std::filesystem::exists(folder / "cpp_relative.ttl"));
+  EXPECT_FALSE(std::filesystem::exists(
+      std::filesystem::path(environment("ARMOR_TEST_SCRATCH")) / "cpp_relative.ttl"));
 }
 
 TEST(Session, UtilitiesAndRawCalls)

@@ -83,6 +83,7 @@ class ArmorService(Node):
             response.armor_response = wire.error_response(ExitCode.TOO_LARGE, str(error))
         except concurrent.futures.TimeoutError:
             response.armor_response = self._timed_out()
+        self._answered([request.armor_request])
         return response
 
     def directive_list_callback(self, request, response):
@@ -105,7 +106,13 @@ class ArmorService(Node):
         except concurrent.futures.TimeoutError:
             response.success = False
             response.armor_responses = [self._timed_out() for _ in directives]
+        self._answered(request.armor_requests)
         return response
+
+    def _answered(self, requests) -> None:
+        """Tell the web view: its list of recent directives follows them all, not changes only."""
+        if self._web_view is not None:
+            self._web_view.directives_answered([r.reference_name for r in requests])
 
     def on_core_event(self, event: dict) -> None:
         """Publish what the core announces (on its event thread, in the core's order)."""

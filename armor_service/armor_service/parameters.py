@@ -93,16 +93,16 @@ _NODE_DEFAULTS: Dict[str, Tuple[Callable[[], Any], str]] = {
                    '`~/armor_files` (made 0700 at start)'),
     'protected_dirs': (lambda: [], '(none; the installation always is)'),
     'state_dir': (lambda: '', '`$XDG_DATA_HOME/armor_ros2/domain<ID>/<node name>`'),
-    # The plugins make setup installed (the PDDL bridge): install/setup.bash exports them.
-    'plugin_dirs': (lambda: path_list(os.environ.get('ARMOR_PLUGIN_DIRS', '')),
-                    '`$ARMOR_PLUGIN_DIRS` (the installed plugins)'),
+    # The user's own: the installed plugins come with installed_plugins, whatever is set here.
+    'plugin_dirs': (lambda: [], None),
 }
 _NODE_DESCRIPTIONS = {
     'allowed_dirs': ' (a string array, one path, or paths joined by ":")',
     'write_dirs': ' (a string array, one path, or paths joined by ":")',
     'protected_dirs': ' (a string array, one path, or paths joined by ":")',
     'state_dir': ' (empty: the default directory)',
-    'plugin_dirs': ' (a string array, one path, or paths joined by ":")',
+    'plugin_dirs': ' (a string array, one path, or paths joined by ":"), loaded besides the '
+                   'installed plugins (installed_plugins)',
 }
 _ALSO_STRING = {'allowed_dirs': path_list, 'write_dirs': path_list, 'protected_dirs': path_list,
                 'plugin_dirs': path_list}
@@ -148,6 +148,9 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
     Parameter('extensions', 'string_array', [],
               'Python extensions to load (entry points of group armor_service.extensions; '
               'a string array or names separated by commas)', also_string=name_list),
+    Parameter('installed_plugins', 'boolean', True,
+              'also load the plugins make setup installed (`$ARMOR_PLUGIN_DIRS`: the PDDL '
+              'bridge), whatever plugin_dirs says'),
     Parameter('plugin_dir', 'string', '',
               'deprecated since 0.3.0: one directory, added to plugin_dirs'),
     Parameter('subscription_idle_s', 'double', 5.0,
@@ -188,4 +191,9 @@ def core_settings(value: Callable[[str], Any], warn: Callable[[str], None]) -> D
         if given:
             warn(f'parameter {alias} is deprecated: use {target} (a list); {given} is added to it')
             settings[target] = [*settings[target], *path_list(given)]
+    if value('installed_plugins'):
+        # Setting plugin_dirs to add a plugin must not drop the planner bridge unnoticed.
+        installed = path_list(os.environ.get('ARMOR_PLUGIN_DIRS', ''))
+        settings['plugin_dirs'] = [*installed, *(directory for directory in settings['plugin_dirs']
+                                                 if directory not in installed)]
     return settings

@@ -293,6 +293,65 @@ def test_recent_directives_name_the_client_and_the_outcome(web_node, page):
     expect(page.locator('#recent-table')).to_contain_text('armor_web')
 
 
+def test_recent_directives_follow_queries_live_without_a_click(web_node, page):
+    """Issue 35 item 9: a query moves no revision, yet shows in the open list at once."""
+    load(web_node, 'web_recent_live')
+    open_reference(page, web_node, 'web_recent_live', 'recent')
+    rows = page.locator('#recent-table tbody tr')
+    expect(rows.first).to_contain_text('LOAD')
+    assert call(web_node, 'web_recent_live', 'QUERY IND CLASS', 'Robot',
+                client='live_reader').success
+    expect(rows.first).to_contain_text('live_reader', timeout=SHOWN_WITHIN_MS)
+    expect(rows.first).to_contain_text('QUERY IND CLASS')
+    assert not call(web_node, 'web_recent_live', 'QUERY IND', client='sloppy_reader').success
+    expect(rows.first).to_contain_text('sloppy_reader', timeout=SHOWN_WITHIN_MS)
+    assert still_the_same_document(page)
+
+
+def legend_colours(page):
+    page.wait_for_function('() => document.querySelectorAll("#graph-legend .swatch").length > 0')
+    return page.evaluate("""() => Object.fromEntries([...document.querySelectorAll(
+        '#graph-legend > span')].map((item) => [item.textContent,
+        getComputedStyle(item.querySelector('.swatch')).backgroundColor]))""")
+
+
+def test_each_class_keeps_one_colour_and_edge_labels_stay_readable(web_node, browser, page):
+    """Issue 35 item 9: a type's colour depends on its name only, not on the page's history;
+    edge labels are level, on a background, and at least 11 px on screen."""
+    load(web_node, 'web_colours')
+    open_reference(page, web_node, 'web_colours', 'graph')
+    expect(page.locator('#graph-legend')).to_contain_text('Room')
+    assert call(web_node, 'web_colours', 'REPLACE OBJECTPROP IND', 'isIn', 'alice', 'bedroom',
+                'corridor1').success
+    expect(page.locator('#graph-note')).to_contain_text('individuals')
+    page.wait_for_function('() => window.armorWeb.graph().getElementById('
+                           '"http://www.example.org/robotics#bedroom").data("label")'
+                           '.endsWith("OccupiedRoom")', timeout=SHOWN_WITHIN_MS)
+    seen_first = legend_colours(page)
+    other = browser.new_context(viewport={'width': 1400, 'height': 900}).new_page()
+    open_reference(other, web_node, 'web_colours', 'graph')
+    seen_later = legend_colours(other)
+    assert seen_first == seen_later and len(set(seen_later.values())) == len(seen_later)
+    other.context.close()
+
+    page.wait_for_function('() => window.armorWeb.settled()')
+    page.wait_for_function("""() => window.armorWeb.graph().edges().every((edge) =>
+        parseFloat(edge.renderedStyle('font-size')) >= 11)""", timeout=SHOWN_WITHIN_MS)
+    styles = page.evaluate("""() => window.armorWeb.graph().edges().map((edge) =>
+        [edge.style('text-rotation'), Number(edge.style('text-background-opacity'))])""")
+    assert styles and all(rotation == 'none' and opacity > 0.5 for rotation, opacity in styles)
+
+
+def test_the_dl_box_names_a_word_the_reference_does_not_know(web_node, page):
+    """Issue 35 item 2: a misspelt class answers nothing, and the page says why."""
+    load(web_node, 'web_dl_typo')
+    open_reference(page, web_node, 'web_dl_typo', 'query')
+    page.fill('#dl-expression', 'Agent and (isIn some Rom)')
+    page.click('#dl-form button')
+    expect(page.locator('#dl-result .note').first).to_contain_text(
+        "new to the reference: class 'Rom' (did you mean Room?)")
+
+
 def test_ten_thousand_individuals_are_paged_and_found_by_name(web_node, page):
     abox = write_abox(web_node.scratch / 'ten_thousand.owl', rooms=2000, robots=8000)
     load(web_node, 'web_big', path=str(abox))

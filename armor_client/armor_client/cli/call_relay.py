@@ -228,6 +228,7 @@ class _Relay:
                 self._last = time.monotonic()
 
     def _answer(self, request: dict, send: Callable[[dict], None]) -> dict:
+        from armor_client.commands import find_on
         from armor_client.errors import ArmorServiceCallError
         from armor_client.transport import directive
         namespace, wait_s = request.get('namespace', ''), float(request['wait_s'])
@@ -235,10 +236,12 @@ class _Relay:
         if namespace not in self._proven:
             send({'state': 'discovering'})
         fields = request['directive']
+        words = (fields['command'], fields['primary'], fields['secondary'])
         try:
-            response = transport.call(directive(fields['client'], fields['reference'],
-                                                fields['command'], fields['primary'],
-                                                fields['secondary'], fields['args']),
+            find_on(transport, *words)  # a plugin's command: which of its arguments are paths
+            # Relative paths are the caller's: resolved against its directory, not the relay's.
+            response = transport.call(directive(fields['client'], fields['reference'], *words,
+                                                fields['args'], cwd=request.get('cwd')),
                                       timeout_s=request.get('timeout_s'))
         except ArmorServiceCallError as error:
             return {'error': str(error), 'unreachable': True}

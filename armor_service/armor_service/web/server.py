@@ -27,7 +27,7 @@ import ipaddress
 import json
 import pathlib
 import threading
-from typing import Any, Awaitable, Callable, Dict, Optional
+from typing import Any, Awaitable, Callable, Dict, List, Optional
 
 from aiohttp import web, WSMsgType
 from armor_service.core_process import CoreUnavailable
@@ -106,6 +106,10 @@ class WebView:
                                f'{outcome[0]}') from outcome[0]
         self._core.add_event_listener(self._on_event)
         return self.url
+
+    def directives_answered(self, references: List[str]) -> None:
+        """The node answered directives on these references (a name per directive)."""
+        self._live.on_directives(references)
 
     def stop(self) -> None:
         if self._thread is None or not self._thread.is_alive():
@@ -234,7 +238,7 @@ class _Routes:
         limit = _integer(request, 'limit', 50)
         view = {'name': 'recent', 'reference': reference, 'limit': limit,
                 'exclude_clients': [] if everyone else [WEB_CLIENT]}
-        return await self._shared(('recent', reference, everyone, limit), self._live.version(),
+        return await self._shared(('recent', reference, everyone, limit), self._live.answered(),
                                   RECENT_MAX_AGE_S, lambda: self._reads.view(view))
 
     async def reference(self, request: web.Request) -> web.Response:

@@ -45,7 +45,7 @@ public final class AllowedPaths {
         return new AllowedPaths(config.allowedDirs(), stateDir == null ? List.of() : List.of(stateDir));
     }
 
-    /** A path a client sent, made absolute and confined; 213 when it may not be read. */
+    /** A path a client sent, absolute and confined; 213 when it is relative or may not be read. */
     public Path check(String clientPath) {
         Path target = finalTarget(clientPath);
         String refusal;
@@ -104,13 +104,26 @@ public final class AllowedPaths {
         return Optional.empty();
     }
 
-    /** A path a client sent, made absolute, as {@link #finalTarget(Path)} resolves it; 213 when it cannot be. */
+    /** An absolute path a client sent, as {@link #finalTarget(Path)} resolves it; 213 when it cannot be. */
     static Path finalTarget(String clientPath) {
         if (clientPath == null || clientPath.isBlank()) {
             throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "empty path");
         }
+        Path given;
         try {
-            return finalTarget(Path.of(clientPath.trim()).toAbsolutePath());
+            given = Path.of(clientPath.trim());
+        } catch (RuntimeException e) {
+            throw new ArmorException(ExitCode.PATH_NOT_ALLOWED, "path '" + clientPath + "' cannot be used: " + e);
+        }
+        if (!given.isAbsolute()) {
+            // Relative to what? The node's folder is not the caller's: the clients make paths absolute
+            // against the caller's (docs/commands.md#paths), and a raw directive must do the same.
+            throw new ArmorException(ExitCode.PATH_NOT_ALLOWED, "relative path '" + clientPath + "' refused:"
+                    + " send an absolute path (the node would have taken it as " + given.toAbsolutePath()
+                    + ", in its own working directory, not the caller's)");
+        }
+        try {
+            return finalTarget(given);
         } catch (IOException | RuntimeException e) {
             throw new ArmorException(ExitCode.PATH_NOT_ALLOWED, "path '" + clientPath + "' cannot be used: " + e);
         }

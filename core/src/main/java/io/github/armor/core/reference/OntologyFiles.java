@@ -104,7 +104,7 @@ public final class OntologyFiles {
         Path path = allowedPath(clientPath);
         if (!Files.isRegularFile(path)) {
             throw new ArmorException(ExitCode.LOAD_FAILED, Files.exists(path)
-                    ? "'" + clientPath + "' is not a regular file" : "no such file: '" + clientPath + "'");
+                    ? "'" + path + "' is not a regular file" : "no such file: " + path);
         }
         ImportResolver imports = new ImportResolver(allowed, config.webLoading(), path.getParent());
         OWLOntology ontology = load(newManager(imports), LoadProgress.counted(path.toFile()), clientPath,

@@ -25,10 +25,10 @@ public final class PddlCommands implements CommandGroup {
 
     @Override
     public void register(CommandTable table) {
-        table.command("QUERY PDDL PROBLEM").args("mapping")
+        table.command("QUERY PDDL PROBLEM").args("mapping path or text")
                 .summary("a PDDL problem from the reference's asserted and inferred knowledge (docs/pddl.md)")
                 .query(c -> c.ok(List.of(problem(c).text())));
-        table.command("SAVE PDDL PROBLEM").args("mapping", "path")
+        table.command("SAVE PDDL PROBLEM").args("mapping path or text", "path")
                 .summary("write that PDDL problem to a file inside write_dirs")
                 .onReference(c -> {
                     WritablePaths writable = WritablePaths.of(c.config());
@@ -52,7 +52,7 @@ public final class PddlCommands implements CommandGroup {
         Path file = AllowedPaths.forReading(c.config()).check(trimmed);
         try {
             if (!Files.isRegularFile(file)) {
-                throw new ArmorException(ExitCode.LOAD_FAILED, "mapping file '" + trimmed + "' does not exist");
+                throw new ArmorException(ExitCode.LOAD_FAILED, "mapping file " + file + " does not exist");
             }
             if (Files.size(file) > MAX_MAPPING_BYTES) {
                 throw new ArmorException(ExitCode.TOO_LARGE, "mapping file '" + trimmed + "' is larger than "
