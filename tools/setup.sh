@@ -14,6 +14,8 @@
 #   2. armor_msgs  cmake + make of armor_msgs/ into install/armor_msgs (build/armor_msgs)
 #   2b. armor_cpp  cmake + make of the C++ client armor_cpp/ into install/armor_cpp (build/armor_cpp),
 #                  with its GoogleTest tests (Debian's libgtest-dev, installed here when missing)
+#   2c. scenes     cmake + make of sit_armor_injected_msgs/ and an editable install of the scene
+#                  extension sit_armor_injected/, both into .venv (docs/scenes.md)
 #   3. core        mvn package of core/ (when core/pom.xml exists)
 #   3b. plugins    mvn package of each plugins/*/pom.xml into install/armor_plugins
 #   4. python      editable installs of armor_contract/, armor_service/ and armor_client/
@@ -260,6 +262,42 @@ else
   unset AMENT_PREFIX_PATH
   stamp armor_cpp "$cpp_hash"
   echo "armor_cpp: built in $(( $(now) - t0 )) s"
+fi
+
+# ---------------------------------------------------------------- 2c. scenes (SIT)
+# The scene service's interface package sit_armor_injected_msgs (cmake + make, as armor_msgs) and
+# the node extension serving it (sit_armor_injected/, editable), both into the venv's prefix, so
+# install/setup.bash needs no line for them. A reinstall first removes what the last one
+# installed (CMake's install manifest).
+SIT_LOGIC=1
+SIT_MSGS_BUILD="$BUILD/sit_armor_injected_msgs"
+sit_hash="$(hash_str "$SIT_LOGIC" "$venv_hash" "$ROOT" \
+  "$(hash_tree sit_armor_injected_msgs/msg sit_armor_injected_msgs/srv)" \
+  "$(hash_of sit_armor_injected_msgs/package.xml sit_armor_injected_msgs/CMakeLists.txt \
+    sit_armor_injected/setup.py sit_armor_injected/package.xml)")"
+if up_to_date sit "$sit_hash" && [ -d "$VENV/lib/python$PYVER/site-packages/sit_armor_injected_msgs" ] \
+   && "$VENV/bin/python" -c 'import sit_armor_injected' >/dev/null 2>&1; then
+  echo "scenes: up to date"
+else
+  t0=$(now); unstamp sit; : > "$LOGS/sit.log"
+  echo "scenes: building sit_armor_injected_msgs with cmake and make, installing the scene extension (log: build/logs/sit.log)"
+  if [ -f "$SIT_MSGS_BUILD/CMakeCache.txt" ] \
+     && ! grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=$ROOT/sit_armor_injected_msgs" "$SIT_MSGS_BUILD/CMakeCache.txt"; then
+    rm -rf "$SIT_MSGS_BUILD"
+  fi
+  run_logged sit env AMENT_PREFIX_PATH="$VENV" cmake -S sit_armor_injected_msgs -B "$SIT_MSGS_BUILD" \
+    -DCMAKE_PREFIX_PATH="$VENV" -DCMAKE_INSTALL_PREFIX="$VENV" \
+    -DPython3_EXECUTABLE="$VENV/bin/python" -DBUILD_TESTING=OFF
+  run_logged sit env AMENT_PREFIX_PATH="$VENV" make -C "$SIT_MSGS_BUILD" -j2
+  if [ -f "$SIT_MSGS_BUILD/install_manifest.txt" ]; then
+    # No stale files from removed interfaces (only paths inside the venv are touched).
+    grep "^$VENV/" "$SIT_MSGS_BUILD/install_manifest.txt" | while IFS= read -r f; do rm -f "$f"; done
+  fi
+  run_logged sit make -C "$SIT_MSGS_BUILD" install
+  run_logged sit "$VENV/bin/python" -m pip install --no-deps --no-build-isolation \
+    --config-settings editable_mode=compat -e sit_armor_injected
+  stamp sit "$sit_hash"
+  echo "scenes: built in $(( $(now) - t0 )) s"
 fi
 
 # ---------------------------------------------------------------- 3. core (Java)

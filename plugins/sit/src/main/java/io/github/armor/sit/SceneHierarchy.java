@@ -1,0 +1,69 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.sit;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLOntology;
+
+/**
+ * The learned scene classes of a reference (subclasses of SCENE stated equivalent to a scene
+ * definition) and where the reasoner places them: each under the scenes it contains, that is,
+ * the learned classes it is a subclass of, nearest first.
+ */
+final class SceneHierarchy {
+    private SceneHierarchy() {}
+
+    /** A learned class with its definition, its nearest learned superclasses and its equivalent learned classes. */
+    record Placed(OWLClass owlClass, SceneDefinition definition, Set<OWLClass> parents, Set<OWLClass> equivalents) {}
+
+    static List<Placed> of(SceneReference reference) {
+        OWLOntology ontology = reference.ontology();
+        SceneVocabulary vocabulary = new SceneVocabulary(reference);
+        Map<OWLClass, SceneDefinition> learned = new LinkedHashMap<>();
+        if (!vocabulary.known(vocabulary.scene())) {
+            return List.of();
+        }
+        ontology.subClassAxiomsForSuperClass(vocabulary.scene())
+                .filter(axiom -> !axiom.getSubClass().isAnonymous())
+                .map(axiom -> axiom.getSubClass().asOWLClass())
+                .sorted(Comparator.comparingInt((OWLClass c) -> SceneVocabulary.learnedNumber(c).orElse(Integer.MAX_VALUE))
+                        .thenComparing(c -> c.getIRI().toString()))
+                .forEach(owlClass -> SceneTeacher.definitionOf(ontology, owlClass)
+                        .ifPresent(definition -> learned.put(owlClass, definition)));
+        Map<OWLClass, Set<OWLClass>> above = new LinkedHashMap<>();
+        Map<OWLClass, Set<OWLClass>> same = new LinkedHashMap<>();
+        for (OWLClass owlClass : learned.keySet()) {
+            if (Thread.interrupted()) {
+                throw new IllegalStateException("interrupted while placing the scene classes");
+            }
+            Set<OWLClass> equivalents = new LinkedHashSet<>(reference.equivalentClasses(owlClass));
+            equivalents.retainAll(learned.keySet());
+            Set<OWLClass> supers = new LinkedHashSet<>(reference.superClasses(owlClass));
+            supers.retainAll(learned.keySet());
+            supers.removeAll(equivalents);
+            supers.remove(owlClass);
+            above.put(owlClass, supers);
+            same.put(owlClass, equivalents);
+        }
+        List<Placed> placed = new ArrayList<>();
+        for (Map.Entry<OWLClass, SceneDefinition> entry : learned.entrySet()) {
+            Set<OWLClass> supers = above.get(entry.getKey());
+            Set<OWLClass> nearest = new LinkedHashSet<>();
+            for (OWLClass candidate : supers) {
+                boolean throughAnother = supers.stream().anyMatch(other -> !other.equals(candidate)
+                        && !same.get(other).contains(candidate) && above.get(other).contains(candidate));
+                if (!throughAnother) {
+                    nearest.add(candidate);
+                }
+            }
+            placed.add(new Placed(entry.getKey(), entry.getValue(), nearest, same.get(entry.getKey())));
+        }
+        return placed;
+    }
+}
