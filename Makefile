@@ -33,6 +33,10 @@ demo: setup  ## run the surveillance tutorial against a running service (make ru
 demo-plan: setup  ## the tutorial, its robot following PDDL plans (pyperplan) over ARMOR's problems
 	source install/setup.bash && python examples/surveillance_demo.py --plan
 
+.PHONY: demo-scenes
+demo-scenes: setup  ## teach table-top arrangements by demonstration (scene service; make run first)
+	source install/setup.bash && python examples/scenes_demo.py
+
 test: setup  ## run the whole test suite: JUnit (core) and pytest (node over real ROS 2)
 	bash tools/test.sh
 
