@@ -12,9 +12,10 @@ the node's scene service ``sit_armor_injected`` as a ROS 1 SIT client would. The
 2. shows a new example of the row of cones, elsewhere on the table: recognised, nothing learned;
 3. shows the plate, ball and cup with a cone beside them, at threshold 0 (learn only what
    matches nothing): recognised as the plate scene with its similarity, card(class)/card(scene);
-4. shows a new arrangement (two balls in a line before a box lid): nothing is similar enough,
-   so it is learned;
-and prints the learned classes in words, each under the scenes it contains.
+4. shows a new arrangement, the stack of cylinders beside the row of cones: neither is similar
+   enough (each is only part of it), so it is learned, and the reasoner places the new class
+   under both (a scene is a subclass of the scenes it contains);
+and prints the learned classes in words, with the scenes each contains.
 
 Run it against a running service (``make run`` in another terminal, then ``make demo-scenes``)
 with the web view open on the Scenes tab of reference "table":
@@ -135,11 +136,11 @@ def main(argv=None) -> int:
                        + [('CONE', (0.5, 0.6, 0.0, *UP))], rng)
         show('plate scene and a cone', larger, threshold=0.0)
 
-        print('Something never shown before: two balls in a line in front of a box lid:')
-        show('two balls and a lid', noisy([('SPHERE', (0.0, 0.0, 0.04)), ('SPHERE', (0.0, 0.2, 0.04)),
-                                           ('PLANE', (0.3, 0.1, 0.1, 1.0, 0.0, 0.0))], rng))
+        print('Something never shown before: the stack of cylinders beside the row of cones:')
+        show('stack and row', noisy(ARRANGEMENTS['stack of cylinders'](0.0, 0.0)
+                                    + ARRANGEMENTS['row of cones'](0.0, 0.5), rng))
 
-        print('What the robot has learned (each scene under the scenes it contains):')
+        print('What the robot has learned (and which learned scenes each contains):')
         for scene in table.scene_classes():
             taught_as = next((n for n, c in taught.items() if c == scene.name), 'new arrangement')
             contains = f', contains {", ".join(scene.superscenes)}' if scene.superscenes else ''

@@ -13,9 +13,17 @@ function sceneEntity(rendered) {
   return {iri, name: shortName(rendered)};
 }
 
-function sceneDefinition(sceneClass) {
-  return el('ul', {className: 'scene-definition'},
-    sceneClass.restrictions.map((r) => el('li', {title: `${r.property} min ${r.min} ${r.type}`, text: r.words})));
+// Definitions longer than this start folded (a click opens them).
+const OPEN_DEFINITION_MAX = 6;
+
+/** A class's definition in words, one restriction a line; folded when long or shown before. */
+function sceneDefinition(sceneClass, shownBefore) {
+  const count = sceneClass.restrictions.length;
+  return el('details', {className: 'scene-definition', open: !shownBefore && count <= OPEN_DEFINITION_MAX},
+    el('summary', {className: 'muted', text: `defined by ${count} restriction${count === 1 ? '' : 's'}`
+      + (shownBefore ? ' (also listed above)' : '')}),
+    el('ul', {}, sceneClass.restrictions.map((r) =>
+      el('li', {title: `${r.property} min ${r.min} ${r.type}`, text: r.words}))));
 }
 
 /** The learned classes as a tree: each class under every learned class it is a subclass of. */
@@ -37,16 +45,19 @@ function renderSceneClasses(container, classes) {
       children.get(parent).push(sceneClass);
     }
   }
+  const shown = new Set();
   const item = (sceneClass, ancestors) => {
     const below = ancestors.has(sceneClass.class) ? [] : children.get(sceneClass.class) || [];
     const inside = new Set([...ancestors, sceneClass.class]);
+    const shownBefore = shown.has(sceneClass.class);
+    shown.add(sceneClass.class);
     return el('li', {'data-scene': sceneClass.name},
       el('div', {className: 'scene-head'},
         entityLink(sceneEntity(sceneClass.class), 'class'),
         el('span', {className: 'tag', text: `cardinality ${sceneClass.cardinality}`}),
         sceneClass.equivalent.length
           ? el('span', {className: 'tag', text: '≡ ' + sceneClass.equivalent.map(shortName).join(', ')}) : null),
-      sceneDefinition(sceneClass),
+      sceneDefinition(sceneClass, shownBefore),
       below.length ? el('ul', {}, below.map((child) => item(child, inside))) : null);
   };
   fill(container, el('h3', {text: `Learned scenes (${classes.length})`}),
@@ -65,9 +76,16 @@ function sceneExplanation(recognition) {
       el('th', {text: 'relations of the scene that meet it'}), el('th', {text: 'elements'}))),
     el('tbody', {}, recognition.explanation.map((match) => el('tr', {},
       el('td', {text: match.restriction}),
-      el('td', {className: 'manchester'}, match.relations.map((r) => el('div', {text: r}))),
+      el('td', {className: 'manchester', text: match.relations.join('; ')}),
       el('td', {className: match.counted >= match.min ? 'met' : 'fail',
         text: `${match.counted} of at least ${match.min}`})))));
+}
+
+/** SPHERE#1 at (0.00, 0.10, 0.05), with its axis when it has one: centimetres are what matter. */
+function elementText(element) {
+  const triple = (values) => `(${values.map((v) => v.toFixed(2)).join(', ')})`;
+  const f = element.features;
+  return `${element.label} at ${triple(f.slice(0, 3))}` + (f.length === 6 ? ` axis ${triple(f.slice(3))}` : '');
 }
 
 function renderRecentScenes(container, scenes) {
@@ -80,10 +98,11 @@ function renderRecentScenes(container, scenes) {
     el('div', {className: 'muted'}, `${clock(scene.at_ms)} · ${scene.client || '(no name)'} · `
       + `${scene.elements.length} elements, cardinality ${scene.cardinality}`),
     el('div', {className: 'manchester'}, scene.elements.map((e) =>
-      el('span', {className: 'scene-element', text: `${e.label} (${e.features.map((v) => +v.toFixed(3)).join(', ')})`}))),
+      el('span', {className: 'scene-element', text: elementText(e)}))),
     scene.learned
-      ? el('div', {}, 'learned ', entityLink(sceneEntity(scene.learned), 'class'),
-        el('span', {className: 'muted', text: `: ${scene.learned_definition}`}))
+      ? el('details', {className: 'scene-learned'},
+        el('summary', {}, 'learned ', entityLink(sceneEntity(scene.learned), 'class')),
+        el('div', {className: 'muted', text: scene.learned_definition}))
       : el('div', {className: 'muted', text: scene.cardinality ? 'nothing learned' : 'no relation: nothing learned'}),
     scene.recognitions.map((recognition) => el('details', {className: 'scene-recognition'},
       el('summary', {}, 'recognised as ', el('strong', {text: recognition.name}),

@@ -1,7 +1,7 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.sit;
 
-/** A request the scene logic refuses before it changes anything; the kind decides the exit code. */
+/** A scene the logic refuses, having changed nothing; the kind decides the exit code. */
 public final class InvalidScene extends RuntimeException {
     /** What is wrong with it. */
     public enum Kind {
@@ -10,7 +10,9 @@ public final class InvalidScene extends RuntimeException {
         /** A number that is not a finite number, or out of its range. */
         VALUE,
         /** More elements than a scene may have. */
-        TOO_LARGE
+        TOO_LARGE,
+        /** The reference is inconsistent: no class membership means anything. */
+        INCONSISTENT
     }
 
     private final Kind kind;

@@ -1,6 +1,8 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.sit;
 
+import java.util.HashMap;
+import java.util.Map;
 import java.util.Optional;
 
 /**
@@ -21,7 +23,7 @@ public enum Relation {
     ALONG_Z("alongZ", "along Z with"),
     PARALLEL("parallel", "parallel to"),
     PERPENDICULAR("perpendicular", "perpendicular to"),
-    COAXIAL("coaxial", "on the axis of");
+    COAXIAL("coaxial", "coaxial with");
 
     private final String word;
     private final String fromObject;
@@ -53,14 +55,20 @@ public enum Relation {
 
     /** The relation and subject type a property name stands for, if it is one of these. */
     public static Optional<Property> ofProperty(String name) {
-        for (Relation relation : values()) {
-            for (Shape shape : Shape.values()) {
-                if (relation.property(shape).equals(name)) {
-                    return Optional.of(new Property(relation, shape));
+        return Optional.ofNullable(Names.BY_NAME.get(name));
+    }
+
+    /** Every scene property by name (a holder: built once the enum's constants exist). */
+    private static final class Names {
+        static final Map<String, Property> BY_NAME = new HashMap<>();
+
+        static {
+            for (Relation relation : values()) {
+                for (Shape shape : Shape.values()) {
+                    BY_NAME.put(relation.property(shape), new Property(relation, shape));
                 }
             }
         }
-        return Optional.empty();
     }
 
     /** A scene property: a relation from an element of a type. */

@@ -2,7 +2,6 @@
 package io.github.armor.sit;
 
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -29,13 +28,8 @@ final class SceneHierarchy {
         if (!vocabulary.known(vocabulary.scene())) {
             return List.of();
         }
-        ontology.subClassAxiomsForSuperClass(vocabulary.scene())
-                .filter(axiom -> !axiom.getSubClass().isAnonymous())
-                .map(axiom -> axiom.getSubClass().asOWLClass())
-                .sorted(Comparator.comparingInt((OWLClass c) -> SceneVocabulary.learnedNumber(c).orElse(Integer.MAX_VALUE))
-                        .thenComparing(c -> c.getIRI().toString()))
-                .forEach(owlClass -> SceneTeacher.definitionOf(ontology, owlClass)
-                        .ifPresent(definition -> learned.put(owlClass, definition)));
+        LearnedScenes.of(reference, vocabulary.scene()).classes()
+                .forEach(each -> learned.put(each.owlClass(), each.definition()));
         Map<OWLClass, Set<OWLClass>> above = new LinkedHashMap<>();
         Map<OWLClass, Set<OWLClass>> same = new LinkedHashMap<>();
         for (OWLClass owlClass : learned.keySet()) {

@@ -52,6 +52,8 @@ final class SceneJson {
         item.add("elements", elements);
         item.addProperty("cardinality", outcome.cardinality());
         item.addProperty("relations", outcome.facts().size());
+        // How it was recognised: by counting in a plain reference, or by the reference's reasoner.
+        item.addProperty("recognised_by", outcome.inReference() ? "reasoner" : "counting");
         item.addProperty("learned", outcome.learned().map(render).orElse(""));
         outcome.learnedDefinition().ifPresent(d -> item.addProperty("learned_definition", d.words()));
         JsonArray recognitions = new JsonArray();

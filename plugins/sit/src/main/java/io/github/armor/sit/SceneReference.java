@@ -10,6 +10,7 @@ import org.semanticweb.owlapi.model.OWLDataFactory;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
+import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
 
 /**
  * What the scene logic needs of the reference a directive runs on, and nothing more: the one
@@ -27,13 +28,25 @@ public interface SceneReference {
 
     /**
      * Applies the changes to the ontology at once, even on a reference whose changes wait for
-     * APPLY (those waiting are applied first, as APPLY would), and brings the reasoner up to date.
-     * If the directive fails later, they are undone with everything else it did.
+     * APPLY (those waiting are applied first, as APPLY would). If the directive fails later, they
+     * are undone with everything else it did.
      */
     void enact(List<OWLOntologyChange> changes);
 
-    /** The named classes the individual belongs to, asserted or inferred, direct or not. */
+    /**
+     * The named classes the individual belongs to, asserted or inferred, direct or not, from the
+     * reference's reasoner brought up to date first (a buffered one too).
+     */
     Set<OWLClass> types(OWLNamedIndividual individual);
+
+    /** Whether the reference is consistent, as its reasoner last found. */
+    boolean consistent();
+
+    /** Makes reasoners of the reference's kind (for reasoning on part of its schema alone). */
+    OWLReasonerFactory reasonerFactory();
+
+    /** The same object for as long as the reference stays loaded (a key for what is kept about it). */
+    Object identity();
 
     /** The named superclasses of a class, asserted or inferred, direct or not (not itself). */
     Set<OWLClass> superClasses(OWLClass owlClass);

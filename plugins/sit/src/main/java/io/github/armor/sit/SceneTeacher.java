@@ -3,8 +3,10 @@ package io.github.armor.sit;
 
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import org.semanticweb.owlapi.model.AddAxiom;
@@ -19,12 +21,18 @@ import org.semanticweb.owlapi.model.OWLOntologyChange;
 import org.semanticweb.owlapi.model.RemoveAxiom;
 
 /**
- * Scene identification and tagging on one reference (docs/scenes.md): the scene becomes an
- * individual related to its elements, the reasoner classifies it under the scene classes learned
- * so far (recognition, each class with its similarity), and when none is similar enough a new
- * class is learned from it. The scene's individuals are removed again; only a learned class (and
- * the vocabulary it needs) stays. The caller runs this as one directive, so a failure anywhere
- * undoes all of it.
+ * Scene identification and tagging on one reference (docs/scenes.md): the scene is an individual
+ * related to its elements, classified under the scene classes learned so far (recognition, each
+ * class with its similarity), and when none is similar enough a new class is learned from it. Only
+ * a learned class (and the vocabulary it needs) stays. The caller runs this as one directive, so
+ * a failure anywhere undoes all of it.
+ *
+ * <p>Two ways to the same recognitions. In a plain reference ({@link LearnedScenes}) the scene's
+ * learned classes follow from its assertions by counting, and its other classes from the rest of
+ * the schema, reasoned on apart and kept ({@link SceneSchema}): the scene never enters the
+ * reference, whose reasoner (which would classify every learned class again for each scene) is
+ * not asked. Otherwise the scene's individuals are added to the reference, its reasoner is asked
+ * for their types, and they are removed again.
  */
 public final class SceneTeacher {
     private static final String SCENE_INDIVIDUAL = "sit-scene";
@@ -32,37 +40,84 @@ public final class SceneTeacher {
 
     private SceneTeacher() {}
 
-    /** A class the scene was recognised as: its similarity card(class) / card(scene), and its definition if it has one. */
+    /** A class the scene was recognised as: its similarity card(class) / card(scene), and its definition if learned. */
     public record Recognition(OWLClass owlClass, double similarity, Optional<SceneDefinition> definition) {}
 
     /**
      * What one scene gave: its facts and cardinality, the classes it was recognised as (most
-     * similar first) and the class learned from it, if any.
+     * similar first), the class learned from it, if any, and whether the reference's reasoner was asked.
      */
     public record Outcome(Scene scene, List<SpatialRelations.Fact> facts, int cardinality,
                           List<Recognition> recognitions, Optional<OWLClass> learned,
-                          Optional<SceneDefinition> learnedDefinition) {}
+                          Optional<SceneDefinition> learnedDefinition, boolean inReference) {}
 
     /**
      * Recognises the scene and learns it unless a recognised class has a similarity above
      * {@code threshold}. A scene with no relation changes nothing and is recognised as nothing.
      */
     public static Outcome evaluate(SceneReference reference, Scene scene, double threshold) {
+        return evaluate(reference, scene, threshold, true);
+    }
+
+    /** The same, always asking the reference's reasoner when {@code mayCount} is false (tests compare the two). */
+    static Outcome evaluate(SceneReference reference, Scene scene, double threshold, boolean mayCount) {
         List<SpatialRelations.Fact> facts = SpatialRelations.of(scene);
         List<SceneAssertion> assertions = SceneAssertion.of(scene, facts);
         if (assertions.isEmpty()) {
-            return new Outcome(scene, facts, 0, List.of(), Optional.empty(), Optional.empty());
+            return new Outcome(scene, facts, 0, List.of(), Optional.empty(), Optional.empty(), false);
         }
-        OWLDataFactory factory = reference.factory();
         OWLOntology ontology = reference.ontology();
         SceneVocabulary vocabulary = new SceneVocabulary(reference);
-
-        // The scene as individuals: what is added here is removed again below.
+        LearnedScenes learned = LearnedScenes.of(reference, vocabulary.scene());
         List<OWLAxiom> schema = new ArrayList<>(vocabulary.missing());
-        Set<OWLObjectProperty> properties = new LinkedHashSet<>();
-        assertions.forEach(a -> properties.add(vocabulary.property(a.property())));
-        properties.stream().filter(p -> !vocabulary.known(p)).forEach(p -> schema.add(factory.getOWLDeclarationAxiom(p)));
-        OWLNamedIndividual sceneIndividual = vocabulary.freshIndividual(SCENE_INDIVIDUAL);
+        assertions.stream().map(a -> vocabulary.property(a.property())).distinct()
+                .filter(p -> !vocabulary.known(p))
+                .forEach(p -> schema.add(reference.factory().getOWLDeclarationAxiom(p)));
+        List<OWLAxiom> addedSchema = absent(ontology, schema);
+
+        SceneSchema rest = mayCount && learned.plain() ? SceneSchema.of(reference, vocabulary, learned) : null;
+        Set<OWLClass> types;
+        List<OWLOntologyChange> changes = new ArrayList<>();
+        boolean inReference = rest == null || !rest.usable();
+        if (inReference) {
+            OWLNamedIndividual sceneIndividual = vocabulary.freshIndividual(SCENE_INDIVIDUAL);
+            List<OWLAxiom> individuals = individuals(reference, vocabulary, sceneIndividual, scene, assertions);
+            reference.enact(additions(ontology, addedSchema, individuals));
+            types = reference.types(sceneIndividual);
+            individuals.forEach(axiom -> changes.add(new RemoveAxiom(ontology, axiom)));
+        } else {
+            if (!reference.consistent()) {
+                throw new InvalidScene(InvalidScene.Kind.INCONSISTENT, "the reference is inconsistent, so a scene"
+                        + " belongs to every class; QUERY CONSISTENCY explains why");
+            }
+            types = counted(learned, rest, vocabulary, scene, assertions);
+        }
+        List<Recognition> recognitions = recognitions(types, vocabulary, learned, assertions.size());
+        boolean learn = recognitions.stream().noneMatch(r -> r.similarity() > threshold);
+
+        Optional<OWLClass> learnedClass = Optional.empty();
+        Optional<SceneDefinition> definition = Optional.empty();
+        if (learn) {
+            SceneDefinition learnedDefinition = SceneDefinition.of(scene, facts);
+            if (!inReference) {
+                addedSchema.forEach(axiom -> changes.add(new AddAxiom(ontology, axiom)));
+            }
+            learnedClass = Optional.of(learn(vocabulary, ontology, learnedDefinition, changes));
+            definition = Optional.of(learnedDefinition);
+        } else if (inReference) {
+            addedSchema.forEach(axiom -> changes.add(new RemoveAxiom(ontology, axiom)));
+        }
+        if (!changes.isEmpty()) {
+            reference.enact(changes);
+        }
+        return new Outcome(scene, facts, assertions.size(), recognitions, learnedClass, definition, inReference);
+    }
+
+    /** The scene as individuals: axioms to be added to the reference and removed again. */
+    private static List<OWLAxiom> individuals(SceneReference reference, SceneVocabulary vocabulary,
+                                              OWLNamedIndividual sceneIndividual, Scene scene,
+                                              List<SceneAssertion> assertions) {
+        OWLDataFactory factory = reference.factory();
         List<OWLNamedIndividual> elements = new ArrayList<>();
         List<OWLAxiom> individuals = new ArrayList<>();
         individuals.add(factory.getOWLDeclarationAxiom(sceneIndividual));
@@ -81,27 +136,41 @@ public final class SceneTeacher {
             individuals.add(factory.getOWLObjectPropertyAssertionAxiom(vocabulary.property(assertion.property()),
                     sceneIndividual, elements.get(assertion.object())));
         }
-        List<OWLAxiom> addedSchema = absent(ontology, schema);
-        List<OWLAxiom> addedIndividuals = absent(ontology, individuals);
-        reference.enact(additions(ontology, addedSchema, addedIndividuals));
+        return individuals;
+    }
 
-        List<Recognition> recognitions = recognise(reference, vocabulary, sceneIndividual, assertions.size());
-        boolean learn = recognitions.stream().noneMatch(r -> r.similarity() > threshold);
-
-        List<OWLOntologyChange> undo = new ArrayList<>();
-        addedIndividuals.forEach(axiom -> undo.add(new RemoveAxiom(ontology, axiom)));
-        Optional<OWLClass> learned = Optional.empty();
-        Optional<SceneDefinition> definition = Optional.empty();
-        if (learn) {
-            SceneDefinition learnedDefinition = SceneDefinition.of(scene, facts);
-            OWLClass learnedClass = learn(vocabulary, ontology, learnedDefinition, undo);
-            learned = Optional.of(learnedClass);
-            definition = Optional.of(learnedDefinition);
-        } else {
-            addedSchema.forEach(axiom -> undo.add(new RemoveAxiom(ontology, axiom)));
+    /**
+     * The classes a scene belongs to in a plain reference: the learned ones whose requirements its
+     * assertions meet, and SCENE with what the rest of the schema puts above it.
+     */
+    private static Set<OWLClass> counted(LearnedScenes learned, SceneSchema rest, SceneVocabulary vocabulary,
+                                         Scene scene, List<SceneAssertion> assertions) {
+        Map<OWLObjectProperty, List<Integer>> objects = new LinkedHashMap<>();
+        for (SceneAssertion assertion : assertions) {
+            objects.computeIfAbsent(vocabulary.property(assertion.property()), p -> new ArrayList<>())
+                    .add(assertion.object());
         }
-        reference.enact(undo);
-        return new Outcome(scene, facts, assertions.size(), recognitions, learned, definition);
+        List<Set<OWLClass>> elementTypes = scene.elements().stream().map(e -> rest.typesOf(e.shape())).toList();
+        Set<OWLClass> types = new LinkedHashSet<>(rest.sceneTypes());
+        types.addAll(learned.recognised(objects, elementTypes));
+        return types;
+    }
+
+    private static List<Recognition> recognitions(Set<OWLClass> types, SceneVocabulary vocabulary,
+                                                  LearnedScenes learned, int cardinality) {
+        List<Recognition> recognitions = new ArrayList<>();
+        for (OWLClass owlClass : types) {
+            if (owlClass.isOWLThing() || owlClass.equals(vocabulary.scene())) {
+                continue;
+            }
+            Optional<SceneDefinition> definition = learned.get(owlClass).map(LearnedScenes.Learned::definition);
+            int classCardinality = definition.map(SceneDefinition::cardinality).orElse(0);
+            recognitions.add(new Recognition(owlClass, Math.min(1.0, (double) classCardinality / cardinality),
+                    definition));
+        }
+        recognitions.sort(Comparator.comparingDouble(Recognition::similarity).reversed()
+                .thenComparing(r -> r.owlClass().getIRI().toString()));
+        return recognitions;
     }
 
     private static List<OWLOntologyChange> additions(OWLOntology ontology, List<OWLAxiom> schema,
@@ -112,34 +181,9 @@ public final class SceneTeacher {
         return changes;
     }
 
-    /** The axioms the ontology does not hold yet: only those are removed again. */
+    /** The axioms the ontology does not hold yet: only those are added, and removed again. */
     private static List<OWLAxiom> absent(OWLOntology ontology, List<OWLAxiom> axioms) {
         return axioms.stream().distinct().filter(axiom -> !ontology.containsAxiom(axiom)).toList();
-    }
-
-    /** The scene individual's classes but SCENE itself (and owl:Thing), each with its similarity. */
-    private static List<Recognition> recognise(SceneReference reference, SceneVocabulary vocabulary,
-                                               OWLNamedIndividual sceneIndividual, int cardinality) {
-        List<Recognition> recognitions = new ArrayList<>();
-        for (OWLClass owlClass : reference.types(sceneIndividual)) {
-            if (owlClass.isOWLThing() || owlClass.equals(vocabulary.scene())) {
-                continue;
-            }
-            Optional<SceneDefinition> definition = definitionOf(reference.ontology(), owlClass);
-            int classCardinality = definition.map(SceneDefinition::cardinality).orElse(0);
-            double similarity = Math.min(1.0, (double) classCardinality / cardinality);
-            recognitions.add(new Recognition(owlClass, similarity, definition));
-        }
-        recognitions.sort(Comparator.comparingDouble(Recognition::similarity).reversed()
-                .thenComparing(r -> r.owlClass().getIRI().toString()));
-        return recognitions;
-    }
-
-    /** The scene definition a class is stated equivalent to, if it has one. */
-    public static Optional<SceneDefinition> definitionOf(OWLOntology ontology, OWLClass owlClass) {
-        return ontology.equivalentClassesAxioms(owlClass)
-                .flatMap(axiom -> axiom.getClassExpressionsMinus(owlClass).stream())
-                .map(SceneDefinition::read).flatMap(Optional::stream).findFirst();
     }
 
     /** A new class SCENE-n under SCENE, equivalent to the definition; the counter moves to n. */

@@ -8,6 +8,7 @@ import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.command.CommandGroup;
 import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.command.Inferences;
+import io.github.armor.core.reference.ReasonerRegistry;
 import io.github.armor.core.reference.Reference;
 import java.util.ArrayList;
 import java.util.List;
@@ -21,6 +22,7 @@ import org.semanticweb.owlapi.model.OWLDataFactory;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
+import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
 import org.semanticweb.owlapi.search.EntitySearcher;
 
 /**
@@ -64,6 +66,7 @@ public final class SitCommands implements CommandGroup {
                 case SHAPE -> ExitCode.WRONG_ARGUMENTS;
                 case VALUE -> ExitCode.BAD_DATA_TYPE;
                 case TOO_LARGE -> ExitCode.TOO_LARGE;
+                case INCONSISTENT -> ExitCode.INCONSISTENT;
             }, e.getMessage() + "; nothing changed");
         }
         if (!c.replaying()) {
@@ -110,15 +113,30 @@ public final class SitCommands implements CommandGroup {
             reference.applyPending();
             reference.change(changes);
             reference.applyPending();
-            if (reference.settings().bufferedReasoner()) {
-                reference.synchroniseReasoner();
-            }
         }
 
         @Override
         public Set<OWLClass> types(OWLNamedIndividual individual) {
+            if (reference.settings().bufferedReasoner()) {
+                reference.synchroniseReasoner();
+            }
             return named(EntitySearcher.getTypes(individual, Inferences.closure(reference)),
                     Inferences.inferred(reference, r -> r.getTypes(individual, false).entities()));
+        }
+
+        @Override
+        public boolean consistent() {
+            return reference.isConsistent();
+        }
+
+        @Override
+        public OWLReasonerFactory reasonerFactory() {
+            return ReasonerRegistry.factory(reference.reasonerName());
+        }
+
+        @Override
+        public Object identity() {
+            return reference;
         }
 
         @Override
