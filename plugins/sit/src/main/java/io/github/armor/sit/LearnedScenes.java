@@ -162,6 +162,22 @@ final class LearnedScenes {
     }
 
     /**
+     * Whether {@code general} subsumes {@code specific} when the primitives are pairwise disjoint
+     * and apart: every requirement of the general one is met by the specific one's on the same
+     * property and filler with at least as large a minimum.
+     */
+    boolean subsumes(Learned general, Learned specific) {
+        for (Requirement wanted : general.requirements()) {
+            boolean met = specific.requirements().stream().anyMatch(r -> r.property().equals(wanted.property())
+                    && r.filler().equals(wanted.filler()) && r.min() >= wanted.min());
+            if (!met) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
      * In a plain reference, the learned classes a scene is an instance of: those whose every
      * requirement it meets, counting distinct elements related by the property whose type the
      * filler subsumes ({@code typesOf} gives each element's named types in the rest of the schema).

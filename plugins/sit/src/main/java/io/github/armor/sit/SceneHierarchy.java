@@ -14,6 +14,12 @@ import org.semanticweb.owlapi.model.OWLOntology;
  * The learned scene classes of a reference (subclasses of SCENE stated equivalent to a scene
  * definition) and where the reasoner places them: each under the scenes it contains, that is,
  * the learned classes it is a subclass of, nearest first.
+ *
+ * <p>In a plain reference whose primitives stay pairwise disjoint and apart, one learned class is
+ * a subclass of another exactly when it requires at least as many elements for each (property,
+ * type) the other requires ({@link LearnedScenes#subsumes}): that is compared directly, since a
+ * reasoner classifying a thousand such classes takes minutes. Elsewhere the reference's reasoner
+ * is asked.
  */
 final class SceneHierarchy {
     private SceneHierarchy() {}
@@ -28,20 +34,32 @@ final class SceneHierarchy {
         if (!vocabulary.known(vocabulary.scene())) {
             return List.of();
         }
-        LearnedScenes.of(reference, vocabulary.scene()).classes()
-                .forEach(each -> learned.put(each.owlClass(), each.definition()));
+        LearnedScenes scenes = LearnedScenes.of(reference, vocabulary.scene());
+        scenes.classes().forEach(each -> learned.put(each.owlClass(), each.definition()));
+        boolean compared = scenes.plain() && SceneSchema.of(reference, vocabulary, scenes).shapesApart();
         Map<OWLClass, Set<OWLClass>> above = new LinkedHashMap<>();
         Map<OWLClass, Set<OWLClass>> same = new LinkedHashMap<>();
-        for (OWLClass owlClass : learned.keySet()) {
+        for (LearnedScenes.Learned each : scenes.classes()) {
             if (Thread.interrupted()) {
                 throw new IllegalStateException("interrupted while placing the scene classes");
             }
-            Set<OWLClass> equivalents = new LinkedHashSet<>(reference.equivalentClasses(owlClass));
-            equivalents.retainAll(learned.keySet());
-            Set<OWLClass> supers = new LinkedHashSet<>(reference.superClasses(owlClass));
-            supers.retainAll(learned.keySet());
-            supers.removeAll(equivalents);
-            supers.remove(owlClass);
+            OWLClass owlClass = each.owlClass();
+            Set<OWLClass> equivalents = new LinkedHashSet<>();
+            Set<OWLClass> supers = new LinkedHashSet<>();
+            if (compared) {
+                for (LearnedScenes.Learned other : scenes.classes()) {
+                    if (other != each && scenes.subsumes(other, each)) {
+                        (scenes.subsumes(each, other) ? equivalents : supers).add(other.owlClass());
+                    }
+                }
+            } else {
+                equivalents.addAll(reference.equivalentClasses(owlClass));
+                equivalents.retainAll(learned.keySet());
+                supers.addAll(reference.superClasses(owlClass));
+                supers.retainAll(learned.keySet());
+                supers.removeAll(equivalents);
+                supers.remove(owlClass);
+            }
             above.put(owlClass, supers);
             same.put(owlClass, equivalents);
         }

@@ -38,14 +38,20 @@ final class SceneSchema {
     private final boolean usable;
     private final Set<OWLClass> sceneTypes;
     private final Map<Shape, Set<OWLClass>> shapeTypes;
+    private final boolean shapesApart;
     private long version = -1;
 
     private SceneSchema(Set<OWLAxiom> axioms, boolean usable, Set<OWLClass> sceneTypes,
-                        Map<Shape, Set<OWLClass>> shapeTypes) {
+                        Map<Shape, Set<OWLClass>> shapeTypes, boolean shapesApart) {
         this.axioms = axioms;
         this.usable = usable;
         this.sceneTypes = sceneTypes;
         this.shapeTypes = shapeTypes;
+        this.shapesApart = shapesApart;
+    }
+
+    private static SceneSchema unusable(Set<OWLAxiom> axioms) {
+        return new SceneSchema(axioms, false, Set.of(), Map.of(), false);
     }
 
     /** The reference's, made again only when the rest of its schema changed. */
@@ -79,14 +85,14 @@ final class SceneSchema {
 
     /** The same facts, known to hold at this version of the ontology. */
     private SceneSchema at(long atVersion) {
-        SceneSchema same = new SceneSchema(axioms, usable, sceneTypes, shapeTypes);
+        SceneSchema same = new SceneSchema(axioms, usable, sceneTypes, shapeTypes, shapesApart);
         same.version = atVersion;
         return same;
     }
 
     private static SceneSchema reason(SceneReference reference, SceneVocabulary vocabulary, Set<OWLAxiom> rest) {
         if (rest.stream().anyMatch(SceneSchema::obstacle)) {
-            return new SceneSchema(rest, false, Set.of(), Map.of());
+            return unusable(rest);
         }
         OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
         OWLReasoner reasoner = null;
@@ -95,20 +101,28 @@ final class SceneSchema {
             reasoner = reference.reasonerFactory().createReasoner(ontology);
             OWLReasoner asked = reasoner;
             if (!asked.isConsistent() || !asked.isSatisfiable(vocabulary.scene())) {
-                return new SceneSchema(rest, false, Set.of(), Map.of());
+                return unusable(rest);
             }
             Map<Shape, Set<OWLClass>> shapes = new EnumMap<>(Shape.class);
             for (Shape shape : Shape.values()) {
                 OWLClass owlClass = vocabulary.shape(shape);
                 if (!asked.isSatisfiable(owlClass)) {
-                    return new SceneSchema(rest, false, Set.of(), Map.of());
+                    return unusable(rest);
                 }
                 shapes.put(shape, typesOf(asked, owlClass));
             }
-            return new SceneSchema(rest, true, typesOf(asked, vocabulary.scene()), shapes);
+            boolean apart = true;
+            for (Shape one : Shape.values()) {
+                for (Shape other : Shape.values()) {
+                    apart &= one == other || !shapes.get(one).contains(vocabulary.shape(other))
+                            && asked.isEntailed(reference.factory().getOWLDisjointClassesAxiom(
+                                    vocabulary.shape(one), vocabulary.shape(other)));
+                }
+            }
+            return new SceneSchema(rest, true, typesOf(asked, vocabulary.scene()), shapes, apart);
         } catch (OWLOntologyCreationException | RuntimeException e) {
             // A reasoner that cannot take the rest alone: the scene is reasoned on in the reference.
-            return new SceneSchema(rest, false, Set.of(), Map.of());
+            return unusable(rest);
         } finally {
             if (reasoner != null) {
                 reasoner.dispose();
@@ -149,6 +163,11 @@ final class SceneSchema {
     /** The named classes other than the learned ones a scene belongs to: SCENE and what it is a subclass of. */
     Set<OWLClass> sceneTypes() {
         return sceneTypes;
+    }
+
+    /** Whether the primitives' classes are pairwise disjoint and none is under another. */
+    boolean shapesApart() {
+        return usable && shapesApart;
     }
 
     /** The named types of a primitive of this shape: its class and what it is a subclass of. */

@@ -39,7 +39,7 @@ import org.semanticweb.owlapi.model.OWLOntologyStorageException;
  * scenes over ROS 2 beside it):
  *
  * <pre>
- *   java -cp ... io.github.armor.sit.SceneBench OUTPUT_DIR SIZES REASONERS SAMPLES [SEED]
+ *   java -cp ... io.github.armor.sit.SceneBench OUTPUT_DIR SIZES REASONERS SAMPLES [SEED [BUFFERED]]
  * </pre>
  *
  * For each memory size it writes {@code memory-N.ofn}: N scene classes as SIT SCENE learns them,
@@ -47,7 +47,8 @@ import org.semanticweb.owlapi.model.OWLOntologyStorageException;
  * by one, and gives the same classes), and {@code probes-N.json}: SAMPLES of those scenes to show
  * again (each is recognised, nothing is learned) and SAMPLES new ones (each is learned). Then, for
  * each reasoner, it loads the memory into an ArmorCore with this plugin and times SIT SCENE on the
- * probes. Prints the figures as JSON.
+ * probes, the reference's reasoner brought up to date after each change (or, with BUFFERED "true",
+ * only when asked: as ROS 1 SIT loaded its ontology). Prints the figures as JSON.
  */
 public final class SceneBench {
     static final String IRI_BASE = "http://www.emarolab.it/sit/simple";
@@ -215,6 +216,7 @@ public final class SceneBench {
         String[] reasoners = args[2].split(",");
         int samples = Integer.parseInt(args[3]);
         long seed = args.length > 4 ? Long.parseLong(args[4]) : 32;
+        boolean buffered = args.length > 5 && Boolean.parseBoolean(args[5]);
         Files.createDirectories(output);
         JsonObject result = new JsonObject();
         JsonArray rows = new JsonArray();
@@ -239,21 +241,21 @@ public final class SceneBench {
             probes.add("new", new Gson().toJsonTree(fresh));
             Files.writeString(output.resolve("probes-" + size + ".json"), probes.toString());
             for (String reasoner : reasoners) {
-                rows.add(measure(output, file, reasoner, size, known, fresh));
+                rows.add(measure(output, file, reasoner, buffered, size, known, fresh));
             }
         }
         result.add("rows", rows);
         System.out.println(new GsonBuilder().create().toJson(result));
     }
 
-    private static JsonObject measure(Path scratch, Path file, String reasoner, int size, List<String> known,
-                                      List<String> fresh) {
+    private static JsonObject measure(Path scratch, Path file, String reasoner, boolean buffered, int size,
+                                      List<String> known, List<String> fresh) {
         CommandTable table = CommandTable.load(SceneBench.class.getClassLoader());
         try (ArmorCore core = new ArmorCore(new CoreConfig(true, reasoner, List.of(scratch), false, 600_000, 0, 0,
                 CoreConfig.Durability.NONE), table)) {
             long started = System.nanoTime();
             Response loaded = core.execute(Directive.of("bench", "memory", "LOAD", "FILE", "", file.toString(), "",
-                    "false", reasoner, "false"));
+                    "false", reasoner, String.valueOf(buffered)));
             if (!loaded.success()) {
                 throw new IllegalStateException("LOAD failed: " + loaded.errorDescription());
             }
@@ -285,6 +287,7 @@ public final class SceneBench {
             }
             JsonObject row = new JsonObject();
             row.addProperty("reasoner", reasoner);
+            row.addProperty("buffered_reasoner", buffered);
             row.addProperty("learned_scenes", size);
             row.addProperty("load_ms", loadMs);
             row.addProperty("first_scene_ms", firstMs);
@@ -292,8 +295,8 @@ public final class SceneBench {
             row.add("learning", timings(learning));
             row.add("recognition_cpu", timings(recognitionCpu));
             row.add("learning_cpu", timings(learningCpu));
-            System.err.printf(Locale.ROOT, "in the core: %s, %d learned: recognition p50 %.1f ms (CPU %.1f ms),"
-                    + " learning p50 %.1f ms (CPU %.1f ms)%n", reasoner, size,
+            System.err.printf(Locale.ROOT, "in the core: %s%s, %d learned: recognition p50 %.1f ms (CPU %.1f ms),"
+                    + " learning p50 %.1f ms (CPU %.1f ms)%n", reasoner, buffered ? " buffered" : "", size,
                     timings(recognition).get("p50_ms").getAsDouble(), timings(recognitionCpu).get("p50_ms").getAsDouble(),
                     timings(learning).get("p50_ms").getAsDouble(), timings(learningCpu).get("p50_ms").getAsDouble());
             return row;

@@ -81,6 +81,21 @@ class SceneWaysTest {
             assertEquals("counting", recognisedBy("counted"));
             assertEquals("reasoner", recognisedBy("reasoned"));
         }
+        // The hierarchy compared directly (plain) is the reasoner's (not plain).
+        assertEquals(hierarchy("reasoned"), hierarchy("counted"));
+        assertTrue(hierarchy("counted").stream().anyMatch(line -> !line.contains("under []")),
+                "the generated scenes contain one another somewhere: " + hierarchy("counted"));
+    }
+
+    /** Each learned class with the learned classes it is placed under and is equivalent to. */
+    private List<String> hierarchy(String reference) {
+        List<String> placed = new ArrayList<>();
+        for (String line : run(reference, "QUERY SIT SCENES").queriedObjects()) {
+            var item = JsonParser.parseString(line).getAsJsonObject();
+            placed.add(item.get("name").getAsString() + " under " + item.get("superscenes") + " same as "
+                    + item.get("equivalent"));
+        }
+        return placed;
     }
 
     @Test
