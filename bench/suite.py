@@ -8,7 +8,8 @@
 (tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set
 with the environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
 (query_latency.py, batch_throughput.py, reasoning_cycle.py, robot_speed.py,
-core_profile.py, lubm.py, default_clients.py).
+core_profile.py, lubm.py, default_clients.py, scenes.py). Section 9 (scenes) runs at full scale
+only; `python bench/scenes.py --smoke` is its small run (tests/integration/test_bench_smoke.py).
 """
 
 import argparse
@@ -31,6 +32,7 @@ import query_latency
 import reasoning_cycle
 import report
 import robot_speed
+import scenes
 
 
 def _command_output(*command: str) -> str:
@@ -128,11 +130,16 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
     stage('8. plain rclpy clients with the default QoS (issue 20)')
     results['default_clients'] = default_clients.measure(
         scratch, snapshot, **default_clients.SUITE_SIZES[scale_name])
+    if scale_name == 'full':
+        stage('9. scenes by demonstration (issue 32)')
+        results['scenes'] = scenes.measure(scratch, snapshot, scale_name)
     results['duration_s'] = time.monotonic() - started
     (scratch / 'results.json').write_text(json.dumps(results, indent=2, default=str))
     report_path.write_text(report.render(results) + '\n\n'
                            + '## 8. Plain rclpy clients with the default QoS (issue 20)\n\n'
-                           + default_clients.render(results['default_clients']) + '\n')
+                           + default_clients.render(results['default_clients']) + '\n'
+                           + ('\n## 9. Scenes by demonstration (issue 32)\n\n'
+                              + scenes.render(results['scenes']) if 'scenes' in results else ''))
     stage(f'report written to {report_path} (raw figures: {scratch / "results.json"})')
     return results
 

@@ -25,15 +25,11 @@ with the web view open on the Scenes tab of reference "table":
 import argparse
 import random
 import sys
-import threading
 import time
 from typing import List, Sequence, Tuple
 
 from armor_client import Armor, ArmorError
-from armor_contract.scenes import SCENE_SERVICE
-from armor_contract.services import SERVICE_QOS
-from sit_armor_injected_msgs.msg import SceneElement
-from sit_armor_injected_msgs.srv import ArmorSITScene
+from sit_armor_injected.client import SceneServiceClient
 
 SIT_IRI = 'http://www.emarolab.it/sit/simple'
 NOISE_M = 0.01
@@ -61,32 +57,6 @@ def noisy(elements: List[Element], rng: random.Random) -> List[Element]:
             for kind, features in elements]
 
 
-class SceneService:
-    """A client of sit_armor_injected, as ROS 1 SIT clients called it."""
-
-    def __init__(self, node, namespace: str = '', wait_s: float = 30.0):
-        name = f'{namespace.rstrip("/")}/{SCENE_SERVICE}' if namespace else SCENE_SERVICE
-        self._client = node.create_client(ArmorSITScene, name, qos_profile=SERVICE_QOS)
-        if not self._client.wait_for_service(timeout_sec=wait_s):
-            raise SystemExit(f'no {name} service: is the node running (make run) with its '
-                             'default extensions?')
-
-    def show(self, reference: str, elements: List[Element], threshold: float):
-        request = ArmorSITScene.Request(
-            onto_reference=reference, learning_treshold=threshold,
-            scene_elements=[SceneElement(type=k, features=[float(v) for v in f]) for k, f in elements])
-        done = threading.Event()
-        future = self._client.call_async(request)
-        future.add_done_callback(lambda _: done.set())
-        if not done.wait(120):
-            raise SystemExit(f'{SCENE_SERVICE} did not answer within 120 s')
-        response = future.result()
-        if not response.success:
-            raise SystemExit(f'{SCENE_SERVICE} refused the scene: {response.exit_code} '
-                             f'{response.error_description}')
-        return response
-
-
 def outcome(response) -> str:
     recognised = ', '.join(f'{r.class_name} ({r.similarity:.2f})' for r in response.recognitions)
     if response.learned_scene_name:
@@ -110,11 +80,14 @@ def main(argv=None) -> int:
         if args.reference in armor.references():
             armor.reference(args.reference).drop()
         table = armor.create(args.reference, SIT_IRI)
-        service = SceneService(armor.transport.node, args.namespace)
+        service = SceneServiceClient(armor.transport.node, args.namespace)
         print(f'Teaching reference "{args.reference}" (web view: the Scenes tab of "{args.reference}")')
 
         def show(title: str, elements: List[Element], threshold: float = THRESHOLD):
-            response = service.show(args.reference, elements, threshold)
+            response = service.call(args.reference, elements, threshold)
+            if not response.success:
+                raise SystemExit(f'{service.name} refused the scene: {response.exit_code} '
+                                 f'{response.error_description}')
             print(f'  {title}: {outcome(response)}')
             sys.stdout.flush()
             time.sleep(args.pause)
@@ -153,6 +126,6 @@ def main(argv=None) -> int:
 if __name__ == '__main__':
     try:
         sys.exit(main())
-    except ArmorError as error:
+    except (ArmorError, TimeoutError) as error:
         print(f'scenes_demo: {error}', file=sys.stderr)
         sys.exit(1)

@@ -15,17 +15,14 @@ import random
 import signal
 import subprocess
 import sys
-import threading
 import time
 
 from armor_client import Armor, ArmorArgumentError, ArmorTransport, directive
-from armor_contract.scenes import SCENE_SERVICE
-from armor_contract.services import SERVICE_QOS
 from change_listener import ChangeListener
 from conftest import start_node
 import pytest
+from sit_armor_injected.client import SceneServiceClient
 from sit_armor_injected_msgs.msg import SceneElement
-from sit_armor_injected_msgs.srv import ArmorSITScene
 
 SIT = 'http://www.emarolab.it/sit/simple'
 TWO_SPHERES = [('SPHERE', [0, 0, 0]), ('SPHERE', [0.8, 0, 0.8])]
@@ -34,43 +31,16 @@ ALL_THREE = [('SPHERE', [0, 0, 0]), ('CONE', [-0.8, -0.8, 0, 0, 0, 1]), ('SPHERE
 TWO_CONES = [('CONE', [0, 0, 0, 0, 0, 1]), ('CONE', [1, 0, 0, 0.5, 0.5, 0])]
 
 
-class SceneClient:
-    """A plain rclpy client of sit_armor_injected on a node spun elsewhere."""
-
-    def __init__(self, node, namespace: str = ''):
-        name = f'{namespace.rstrip("/")}/{SCENE_SERVICE}' if namespace else SCENE_SERVICE
-        self._client = node.create_client(ArmorSITScene, name, qos_profile=SERVICE_QOS)
-        deadline = time.monotonic() + 120
-        # A first answer proves the response path (a response sent before the service has
-        # matched this client's reader is lost): ask something harmless until one comes.
-        while True:
-            assert self._client.wait_for_service(timeout_sec=max(1, deadline - time.monotonic()))
-            try:
-                self.send('', [], 0.9, timeout_s=5)
-                return
-            except TimeoutError:
-                assert time.monotonic() < deadline, f'{name} never answered'
+class SceneClient(SceneServiceClient):
+    """The package's client, with the test's shorthands."""
 
     def send(self, reference, elements, threshold, client_name='', timeout_s=120):
-        request = ArmorSITScene.Request(
-            onto_reference=reference, learning_treshold=float(threshold), client_name=client_name,
-            scene_elements=[SceneElement(type=kind, features=[float(v) for v in features])
-                            for kind, features in elements])
-        done = threading.Event()
-        future = self._client.call_async(request)
-        future.add_done_callback(lambda _: done.set())
-        if not done.wait(timeout_s):
-            self._client.remove_pending_request(future)
-            raise TimeoutError(f'no answer within {timeout_s} s')
-        return future.result()
+        return self.call(reference, elements, threshold, client_name, timeout_s)
 
     def ok(self, reference, elements, threshold=0.9, client_name=''):
         response = self.send(reference, elements, threshold, client_name)
         assert response.success, (response.exit_code, response.error_description)
         return response
-
-    def close(self, node):
-        node.destroy_client(self._client)
 
 
 def recognised(response):
@@ -81,7 +51,7 @@ def recognised(response):
 def scenes(armor):
     client = SceneClient(armor.node)
     yield client
-    client.close(armor.node)
+    client.close()
 
 
 @pytest.fixture
@@ -323,7 +293,7 @@ def test_learned_classes_the_counter_and_recognitions_survive_restarts(own_node)
         time.sleep(0.5)
     assert (response.learned_scene_name, recognised(response)) == ('', {'SCENE-1': 1.0})
     assert client.ok('memory', TWO_CONES).learned_scene_name == 'SCENE-3'
-    client.close(transport.node)
+    client.close()
 
     # The whole node stops and starts again on its state directory.
     nodes[-1].stop()
@@ -332,7 +302,7 @@ def test_learned_classes_the_counter_and_recognitions_survive_restarts(own_node)
     assert recognised(client.ok('memory', SPHERE_AND_CONE)) == {'SCENE-2': 1.0}
     assert recognised(client.ok('memory', TWO_CONES)) == {'SCENE-3': 1.0}
     assert client.ok('memory', ALL_THREE).learned_scene_name == 'SCENE-4'
-    client.close(transport.node)
+    client.close()
 
 
 # ---------------------------------------------------------------- the Python client and the CLI

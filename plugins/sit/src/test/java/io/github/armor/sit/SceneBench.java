@@ -39,16 +39,17 @@ import org.semanticweb.owlapi.model.OWLOntologyStorageException;
  * scenes over ROS 2 beside it):
  *
  * <pre>
- *   java -cp ... io.github.armor.sit.SceneBench OUTPUT_DIR SIZES REASONERS SAMPLES [SEED [BUFFERED]]
+ *   java -cp ... io.github.armor.sit.SceneBench OUTPUT_DIR ROWS SAMPLES BUDGET_S [SEED]
+ *   (ROWS: REASONER:buffered|immediate:SIZE,...  e.g. PELLET:buffered:100,HERMIT:immediate:10)
  * </pre>
  *
- * For each memory size it writes {@code memory-N.ofn}: N scene classes as SIT SCENE learns them,
+ * For each memory size of the rows it writes {@code memory-N.ofn}: N scene classes as SIT SCENE learns them,
  * from N generated table tops of 3 to 8 primitives (writing them is quicker than learning them one
  * by one, and gives the same classes), and {@code probes-N.json}: SAMPLES of those scenes to show
  * again (each is recognised, nothing is learned) and SAMPLES new ones (each is learned). Then, for
- * each reasoner, it loads the memory into an ArmorCore with this plugin and times SIT SCENE on the
- * probes, the reference's reasoner brought up to date after each change (or, with BUFFERED "true",
- * only when asked: as ROS 1 SIT loaded its ontology). Prints the figures as JSON.
+ * each row, it loads the memory into an ArmorCore with this plugin and times SIT SCENE on the
+ * probes within BUDGET_S, the reference's reasoner brought up to date after every change
+ * (immediate) or only when asked (buffered: as ROS 1 SIT loaded its ontology). Prints JSON.
  */
 public final class SceneBench {
     static final String IRI_BASE = "http://www.emarolab.it/sit/simple";
@@ -210,96 +211,130 @@ public final class SceneBench {
         return response;
     }
 
+    /** One configuration to measure: a reasoner, brought up to date after every change or buffered, and a memory size. */
+    record Row(String reasoner, boolean buffered, int size) {
+        static Row parse(String text) {
+            String[] parts = text.split(":");
+            return new Row(parts[0], parts[1].equals("buffered"), Integer.parseInt(parts[2]));
+        }
+    }
+
     public static void main(String[] args) throws Exception {
         Path output = Path.of(args[0]);
-        int[] sizes = Arrays.stream(args[1].split(",")).mapToInt(Integer::parseInt).toArray();
-        String[] reasoners = args[2].split(",");
-        int samples = Integer.parseInt(args[3]);
+        List<Row> rows = Arrays.stream(args[1].split(",")).map(Row::parse).toList();
+        int samples = Integer.parseInt(args[2]);
+        long budgetMs = Long.parseLong(args[3]) * 1000;
         long seed = args.length > 4 ? Long.parseLong(args[4]) : 32;
-        boolean buffered = args.length > 5 && Boolean.parseBoolean(args[5]);
         Files.createDirectories(output);
-        JsonObject result = new JsonObject();
-        JsonArray rows = new JsonArray();
-        for (int size : sizes) {
+        java.util.Map<Integer, List<List<String>>> probes = new java.util.TreeMap<>();
+        for (int size : rows.stream().map(Row::size).distinct().toList()) {
             Random random = new Random(seed + size);
             List<String> memory = new ArrayList<>();
             for (int i = 0; i < size; i++) {
                 memory.add(generated(random));
             }
-            Path file = output.resolve("memory-" + size + ".ofn");
-            writeMemory(file, memory);
+            writeMemory(output.resolve("memory-" + size + ".ofn"), memory);
             List<String> known = new ArrayList<>();
-            for (int i = 0; i < samples; i++) {
-                known.add(memory.get(random.nextInt(memory.size())));
-            }
             List<String> fresh = new ArrayList<>();
             for (int i = 0; i < samples; i++) {
+                known.add(memory.get(random.nextInt(memory.size())));
                 fresh.add(generated(random));
             }
-            JsonObject probes = new JsonObject();
-            probes.add("known", new Gson().toJsonTree(known));
-            probes.add("new", new Gson().toJsonTree(fresh));
-            Files.writeString(output.resolve("probes-" + size + ".json"), probes.toString());
-            for (String reasoner : reasoners) {
-                rows.add(measure(output, file, reasoner, buffered, size, known, fresh));
-            }
+            probes.put(size, List.of(known, fresh));
+            JsonObject written = new JsonObject();
+            written.add("known", new Gson().toJsonTree(known));
+            written.add("new", new Gson().toJsonTree(fresh));
+            Files.writeString(output.resolve("probes-" + size + ".json"), written.toString());
         }
-        result.add("rows", rows);
+        JsonArray measured = new JsonArray();
+        for (Row row : rows) {
+            measured.add(measure(output, row, probes.get(row.size()).get(0), probes.get(row.size()).get(1), budgetMs));
+        }
+        JsonObject result = new JsonObject();
+        result.add("rows", measured);
         System.out.println(new GsonBuilder().create().toJson(result));
     }
 
-    private static JsonObject measure(Path scratch, Path file, String reasoner, boolean buffered, int size,
-                                      List<String> known, List<String> fresh) {
+    /**
+     * LOAD the row's memory and time SIT SCENE on the probes: known scenes first (recognised),
+     * then new ones (learned), as many as fit in the budget after the LOAD. A LOAD whose reasoning
+     * exceeds the budget is reported as such (the core's reasoner time limit stops it).
+     */
+    private static JsonObject measure(Path scratch, Row row, List<String> known, List<String> fresh, long budgetMs) {
+        JsonObject result = new JsonObject();
+        result.addProperty("reasoner", row.reasoner());
+        result.addProperty("buffered_reasoner", row.buffered());
+        result.addProperty("learned_scenes", row.size());
         CommandTable table = CommandTable.load(SceneBench.class.getClassLoader());
-        try (ArmorCore core = new ArmorCore(new CoreConfig(true, reasoner, List.of(scratch), false, 600_000, 0, 0,
-                CoreConfig.Durability.NONE), table)) {
+        try (ArmorCore core = new ArmorCore(new CoreConfig(true, row.reasoner(), List.of(scratch), false, 600_000,
+                budgetMs, 0, CoreConfig.Durability.NONE), table)) {
             long started = System.nanoTime();
-            Response loaded = core.execute(Directive.of("bench", "memory", "LOAD", "FILE", "", file.toString(), "",
-                    "false", reasoner, String.valueOf(buffered)));
+            double cpu = cpuMs();
+            Response loaded = core.execute(Directive.of("bench", "memory", "LOAD", "FILE", "",
+                    scratch.resolve("memory-" + row.size() + ".ofn").toString(), "", "false", row.reasoner(),
+                    String.valueOf(row.buffered())));
+            result.addProperty("load_ms", (System.nanoTime() - started) / 1e6);
+            result.addProperty("load_cpu_ms", cpuMs() - cpu);
             if (!loaded.success()) {
-                throw new IllegalStateException("LOAD failed: " + loaded.errorDescription());
+                result.addProperty("failed", "LOAD: " + loaded.exitCode() + " " + loaded.errorDescription());
+                System.err.println("in the core: " + row + ": " + result.get("failed").getAsString());
+                return result;
             }
-            double loadMs = (System.nanoTime() - started) / 1e6;
-            // The first scene also builds the reasoner's view of the classes: timed apart.
-            started = System.nanoTime();
-            sit(core, known.get(0), "0.9");
-            double firstMs = (System.nanoTime() - started) / 1e6;
-            List<Double> recognition = new ArrayList<>();
-            List<Double> recognitionCpu = new ArrayList<>();
-            for (String scene : known) {
+            long deadline = System.nanoTime() + budgetMs * 1_000_000;
+            List<double[]> recognition = new ArrayList<>();
+            List<double[]> learning = new ArrayList<>();
+            try {
+                // The first scene also builds what is kept about the reference: timed apart.
                 started = System.nanoTime();
-                double cpu = cpuMs();
-                Response response = sit(core, scene, "0.9");
-                recognition.add((System.nanoTime() - started) / 1e6);
-                recognitionCpu.add(cpuMs() - cpu);
-                if (response.queriedObjects().stream().anyMatch(line -> line.startsWith("learned"))) {
-                    throw new IllegalStateException("a known scene was learned again: " + scene);
+                sit(core, known.get(0), "0.9");
+                result.addProperty("first_scene_ms", (System.nanoTime() - started) / 1e6);
+                for (String scene : known) {
+                    if (System.nanoTime() > deadline) {
+                        break;
+                    }
+                    double[] timed = timed(core, scene, "0.9");
+                    recognition.add(timed);
                 }
+                for (String scene : fresh) {
+                    if (System.nanoTime() > deadline) {
+                        break;
+                    }
+                    learning.add(timed(core, scene, "1.0"));
+                }
+            } catch (IllegalStateException e) {
+                result.addProperty("failed", e.getMessage());
             }
-            List<Double> learning = new ArrayList<>();
-            List<Double> learningCpu = new ArrayList<>();
-            for (String scene : fresh) {
-                started = System.nanoTime();
-                double cpu = cpuMs();
-                sit(core, scene, "1.0");
-                learning.add((System.nanoTime() - started) / 1e6);
-                learningCpu.add(cpuMs() - cpu);
-            }
-            JsonObject row = new JsonObject();
-            row.addProperty("reasoner", reasoner);
-            row.addProperty("buffered_reasoner", buffered);
-            row.addProperty("learned_scenes", size);
-            row.addProperty("load_ms", loadMs);
-            row.addProperty("first_scene_ms", firstMs);
-            row.add("recognition", timings(recognition));
-            row.add("learning", timings(learning));
-            row.add("recognition_cpu", timings(recognitionCpu));
-            row.add("learning_cpu", timings(learningCpu));
-            System.err.printf(Locale.ROOT, "in the core: %s%s, %d learned: recognition p50 %.1f ms (CPU %.1f ms),"
-                    + " learning p50 %.1f ms (CPU %.1f ms)%n", reasoner, buffered ? " buffered" : "", size,
-                    timings(recognition).get("p50_ms").getAsDouble(), timings(recognitionCpu).get("p50_ms").getAsDouble(),
-                    timings(learning).get("p50_ms").getAsDouble(), timings(learningCpu).get("p50_ms").getAsDouble());
-            return row;
+            add(result, "recognition", recognition);
+            add(result, "learning", learning);
+            System.err.printf(Locale.ROOT, "in the core: %s: %d recognitions, p50 %s; %d learnings, p50 %s%n", row,
+                    recognition.size(), p50(recognition), learning.size(), p50(learning));
+            return result;
         }
+    }
+
+    /** Wall and CPU milliseconds of one SIT SCENE; a known scene must not be learned again. */
+    private static double[] timed(ArmorCore core, String scene, String threshold) {
+        long started = System.nanoTime();
+        double cpu = cpuMs();
+        Response response = sit(core, scene, threshold);
+        double[] timed = {(System.nanoTime() - started) / 1e6, cpuMs() - cpu};
+        if (threshold.equals("0.9") && response.queriedObjects().stream().anyMatch(l -> l.startsWith("learned"))) {
+            throw new IllegalStateException("a known scene was learned again: " + scene);
+        }
+        return timed;
+    }
+
+    private static void add(JsonObject result, String name, List<double[]> timings) {
+        if (timings.isEmpty()) {
+            return;
+        }
+        result.add(name, timings(timings.stream().map(t -> t[0]).toList()));
+        result.add(name + "_cpu", timings(timings.stream().map(t -> t[1]).toList()));
+    }
+
+    private static String p50(List<double[]> timings) {
+        return timings.isEmpty() ? "-" : String.format(Locale.ROOT, "%.1f ms (CPU %.1f ms)",
+                timings(timings.stream().map(t -> t[0]).toList()).get("p50_ms").getAsDouble(),
+                timings(timings.stream().map(t -> t[1]).toList()).get("p50_ms").getAsDouble());
     }
 }
