@@ -19,7 +19,7 @@ import time
 
 from armor_client import Armor, ArmorArgumentError, ArmorTransport, directive
 from change_listener import ChangeListener
-from conftest import start_node
+from conftest import REPO, start_node
 import pytest
 from sit_armor_injected.client import SceneServiceClient
 from sit_armor_injected_msgs.msg import SceneElement
@@ -346,3 +346,25 @@ def test_the_cli_sends_a_scene_from_a_yaml_file(armor, armor_node, fresh):
     scene.write_text('[{type: CUBE, features: [0, 0, 0]}, {type: SPHERE, features: [1, 1, 1]}]')
     refused = subprocess.run(command, capture_output=True, text=True, timeout=180)
     assert refused.returncode == 1 and 'error 207' in refused.stderr, refused.stderr
+
+
+def test_the_demo_teaches_recognises_and_learns(armor):
+    done = subprocess.run([sys.executable, str(REPO / 'examples' / 'scenes_demo.py'), '--pause', '0',
+                           '--reference', 'scenes_demo_test'], capture_output=True, text=True,
+                          timeout=600)
+    assert done.returncode == 0, done.stderr[-3000:]
+    lines = done.stdout.splitlines()
+    # Each arrangement: learned from its first example, recognised in the others.
+    assert [line.strip() for line in lines if line.strip().startswith('example 1:')] == [
+        'example 1: learned SCENE-1; nothing matched', 'example 1: learned SCENE-2; nothing matched',
+        'example 1: learned SCENE-3; nothing matched']
+    assert sum('recognised SCENE-' in line and '(1.00); nothing learned' in line
+               for line in lines if 'example' in line) == 6
+    assert '  row of cones: recognised SCENE-2 (1.00); nothing learned' in lines
+    partial = next(line for line in lines if line.startswith('  plate scene and a cone:'))
+    assert 'recognised SCENE-3 (0.' in partial and 'nothing learned' in partial
+    assert next(line for line in lines if line.startswith('  stack and row:')).startswith(
+        '  stack and row: learned SCENE-4; recognised SCENE-1')
+    assert any(line.startswith('  SCENE-4 (new arrangement') and 'contains SCENE-1, SCENE-2' in line
+               for line in lines), lines
+    armor.call(directive('t', 'scenes_demo_test', 'DROP'))
