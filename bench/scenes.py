@@ -47,7 +47,8 @@ def plugin_classpath(snapshot: CoreSnapshot) -> str:
     """The installed plugin jar (what the node loads), its bench class, and the frozen core."""
     jar = REPO / 'install' / 'armor_plugins' / 'armor-sit.jar'
     tests = PLUGIN / 'target' / 'test-classes'
-    source = PLUGIN / 'src' / 'test' / 'java' / 'io' / 'github' / 'armor' / 'sit' / 'SceneBench.java'
+    source = PLUGIN / 'src' / 'test' / 'java' / 'io' / 'github' / 'armor' / 'sit' / \
+        'SceneBench.java'
     compiled = tests / 'io' / 'github' / 'armor' / 'sit' / 'SceneBench.class'
     if not compiled.is_file() or compiled.stat().st_mtime < source.stat().st_mtime:
         subprocess.run(['mvn', '-q', '-o', '-f', str(PLUGIN / 'pom.xml'), 'test-compile',
@@ -117,8 +118,9 @@ def over_ros(scratch: pathlib.Path, snapshot: CoreSnapshot, rows, budget_s: int)
                 if times:
                     row['recognition' if kind == 'known' else 'learning'] = latency_summary(times)
             print(f'over ROS 2: {reasoner} {mode} {size}: '
-                  + ', '.join(f'{k} p50 {row[k]["p50_ms"]:.1f} ms' for k in ('recognition', 'learning')
-                              if k in row), file=sys.stderr, flush=True)
+                  + ', '.join(f'{k} p50 {row[k]["p50_ms"]:.1f} ms'
+                              for k in ('recognition', 'learning') if k in row),
+                  file=sys.stderr, flush=True)
             node.call(reference, 'DROP', timeout_s=600)
             measured.append(row)
     finally:
@@ -175,7 +177,8 @@ def render(results: Dict[str, object]) -> str:
             + ('-' if learning is None else f'{learning:.0f} ms '
                + ('(met)' if learning <= LEARNING_TARGET_MS else '(**not met**)')))
     return ('\n'.join(lines) + f'\n\n{results["samples"]} scenes of each kind per row, at most '
-            f'{results["budget_s"]} s each after the LOAD. Targets at {TARGET_SIZE} learned scenes, '
+            f'{results["budget_s"]} s each after the LOAD. Targets at {TARGET_SIZE} learned '
+            'scenes, '
             f'over ROS 2 (recognition <= {RECOGNITION_TARGET_MS} ms, learning <= '
             f'{LEARNING_TARGET_MS} ms): ' + '; '.join(verdicts) + '.\n')
 
@@ -184,7 +187,7 @@ def main():
     import argparse
     import tempfile
     parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
-    parser.add_argument('--smoke', action='store_true', help='two small configurations, a few minutes')
+    parser.add_argument('--smoke', action='store_true', help='one small configuration')
     parser.add_argument('--json', action='store_true', help='print the raw figures')
     options = parser.parse_args()
     scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-scenes-'))

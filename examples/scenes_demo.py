@@ -45,9 +45,11 @@ ARRANGEMENTS = {
         ('CYLINDER', (x, y, 0.00, *UP)), ('CYLINDER', (x, y, 0.10, *UP)),
         ('CYLINDER', (x, y, 0.20, *UP))],
     'row of cones': lambda x, y: [
-        ('CONE', (x, y, 0.0, *UP)), ('CONE', (x + 0.3, y, 0.0, *UP)), ('CONE', (x + 0.6, y, 0.0, *UP))],
+        ('CONE', (x, y, 0.0, *UP)), ('CONE', (x + 0.3, y, 0.0, *UP)),
+        ('CONE', (x + 0.6, y, 0.0, *UP))],
     'ball on a plate beside a cup': lambda x, y: [
-        ('PLANE', (x, y, 0.0, *UP)), ('SPHERE', (x, y, 0.08)), ('CYLINDER', (x, y + 0.3, 0.08, *UP))],
+        ('PLANE', (x, y, 0.0, *UP)), ('SPHERE', (x, y, 0.08)),
+        ('CYLINDER', (x, y + 0.3, 0.08, *UP))],
 }
 
 
@@ -61,7 +63,8 @@ def outcome(response) -> str:
     recognised = ', '.join(f'{r.class_name} ({r.similarity:.2f})' for r in response.recognitions)
     if response.learned_scene_name:
         return f'learned {response.learned_scene_name}' + (
-            f'; recognised {recognised}, not similar enough' if recognised else '; nothing matched')
+            f'; recognised {recognised}, not similar enough' if recognised
+            else '; nothing matched')
     return f'recognised {recognised}; nothing learned'
 
 
@@ -81,7 +84,8 @@ def main(argv=None) -> int:
             armor.reference(args.reference).drop()
         table = armor.create(args.reference, SIT_IRI)
         service = SceneServiceClient(armor.transport.node, args.namespace)
-        print(f'Teaching reference "{args.reference}" (web view: the Scenes tab of "{args.reference}")')
+        print(f'Teaching reference "{args.reference}" '
+              f'(web view: the Scenes tab of "{args.reference}")')
 
         def show(title: str, elements: List[Element], threshold: float = THRESHOLD):
             response = service.call(args.reference, elements, threshold)
@@ -120,7 +124,6 @@ def main(argv=None) -> int:
             print(f'  {scene.name} ({taught_as}, cardinality {scene.cardinality}{contains}): '
                   f'{scene.definition}')
     return 0
-
 
 
 if __name__ == '__main__':

@@ -55,7 +55,7 @@ class Scenes:
     def learn_scene(self, elements: Iterable[ElementLike], threshold: float, *,
                     position_threshold: float = POSITION_THRESHOLD,
                     axis_threshold: float = AXIS_THRESHOLD) -> SceneAnswer:
-        """Recognise a scene under the classes learned so far; learn it unless one is similar enough (SIT SCENE).
+        """Recognise a scene; learn it if no learned class is similar enough (SIT SCENE).
 
         Args:
             elements: each a (type, features) pair, a {'type', 'features'} mapping or a
@@ -80,10 +80,10 @@ class Scenes:
         return self._execute(('QUERY', 'SIT', 'SCENES'), [], self._scene_classes)
 
     def recent_scenes(self) -> List[Dict[str, Any]]:
-        """The last scenes of this reference in the node's session, newest first (QUERY SIT RECENT).
+        """The last scenes of this reference since the core started (QUERY SIT RECENT).
 
-        Each is a dict: elements, cardinality, learned, and recognitions, each with its
-        similarity and an explanation (per restriction: the relations of the scene that meet it).
+        Newest first. Each is a dict: elements, cardinality, learned, and recognitions, each
+        with its similarity and an explanation (per restriction: the relations that meet it).
         """
         return self._execute(('QUERY', 'SIT', 'RECENT'), [],
                              lambda response: [json.loads(t) for t in response.queried_objects])

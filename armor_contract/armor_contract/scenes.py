@@ -1,6 +1,5 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-"""Scene identification and tagging (docs/scenes.md): what the node's scene service and the
-clients share.
+"""Scene identification and tagging (docs/scenes.md): what the scene service and clients share.
 
 A scene goes to the core as the directive ``SIT SCENE`` with four arguments: the learning
 threshold, the position threshold (metres), the axis threshold, and the elements as a JSON array
@@ -13,7 +12,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Iterable, List, Mapping, Sequence, Tuple, Union
 
-# The ROS service (relative to the node's namespace), type sit_armor_injected_msgs/srv/ArmorSITScene.
+# The ROS service (relative to the node's namespace): sit_armor_injected_msgs/srv/ArmorSITScene.
 SCENE_SERVICE = 'sit_armor_injected'
 SCENE_WORDS = ('SIT', 'SCENE', '')
 # The thresholds of ROS 1 SIT: the node's sit_position_threshold and sit_axis_threshold default
@@ -64,8 +63,11 @@ def element_fields(element: ElementLike) -> Tuple[str, List[float]]:
 
 
 def elements_argument(elements: Iterable[ElementLike]) -> str:
-    """The elements as SIT SCENE's fourth argument (JSON; NaN and infinities are sent as such,
-    for the core to refuse)."""
+    """The elements as SIT SCENE's fourth argument.
+
+    JSON: no type can smuggle in another element; NaN and infinities go as such, for the core
+    to refuse with a clear reason.
+    """
     sent = []
     for element in elements:
         kind, features = element_fields(element)
@@ -74,8 +76,11 @@ def elements_argument(elements: Iterable[ElementLike]) -> str:
 
 
 def number_argument(value: float) -> str:
-    """A threshold as an argument: repr keeps every digit; NaN and infinities go as the core
-    reads them, to be refused with a clear reason."""
+    """A threshold as an argument.
+
+    repr keeps every digit; NaN and infinities go as the core reads them, to be refused with a
+    clear reason.
+    """
     value = float(value)
     if math.isnan(value):
         return 'NaN'

@@ -30,7 +30,7 @@ class SceneService:
             '(sit_armor_injected_msgs/srv/ArmorSITScene)')
 
     def scene(self, request, response):
-        """Recognise the request's scene, learning it if new; ARMOR's code and reason if refused."""
+        """Recognise the request's scene, learning it if new; ARMOR's code and reason if not."""
         node = self.context.node
         arguments = scenes.scene_arguments(
             request.scene_elements, request.learning_treshold,

@@ -53,8 +53,8 @@ class SceneServiceClient:
         while True:
             left = deadline - time.monotonic()
             if left <= 0 or not self._client.wait_for_service(timeout_sec=left):
-                raise TimeoutError(f'{self.name} did not answer within {self._wait_s:.0f} s: is the '
-                                   'ARMOR node running with its sit extension?')
+                raise TimeoutError(f'{self.name} did not answer within {self._wait_s:.0f} s: '
+                                   'is the ARMOR node running with its sit extension?')
             try:
                 # A request with no reference is answered at once (201) and changes nothing.
                 self._send(ArmorSITScene.Request(), min(5.0, max(0.5, left)))

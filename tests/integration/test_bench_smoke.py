@@ -74,9 +74,9 @@ def test_the_scenes_bench_runs():
     """bench/scenes.py --smoke: the plugin in the core and the service over ROS 2, side by side."""
     domain = reserve_domain()
     env = {**os.environ, 'ROS_DOMAIN_ID': domain}
-    completed = subprocess.run([sys.executable, str(REPO / 'bench' / 'scenes.py'), '--smoke', '--json'],
-                               env=env, capture_output=True, text=True, timeout=900,
-                               cwd=REPO / 'bench')
+    completed = subprocess.run(
+        [sys.executable, str(REPO / 'bench' / 'scenes.py'), '--smoke', '--json'], env=env,
+        capture_output=True, text=True, timeout=900, cwd=REPO / 'bench')
     release_domain(domain)
     assert completed.returncode == 0, completed.stderr[-4000:]
     results = json.loads(completed.stdout)

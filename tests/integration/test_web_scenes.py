@@ -4,7 +4,9 @@ hierarchy, each defined in words, and the last scenes with their recognitions ex
 sent over ROS appears without a reload."""
 
 from playwright.sync_api import expect
-from test_web_view import browser, call, open_reference, page, still_the_same_document, web_node  # noqa: F401
+# The web view's own fixtures (a node with its web port, a browser, a page) and helpers.
+from test_web_view import browser, page, web_node  # noqa: F401
+from test_web_view import call, open_reference, still_the_same_document
 
 SIT = 'http://www.emarolab.it/sit/simple'
 TWO_SPHERES = 'SPHERE 0 0 0; SPHERE 0.8 0 0.8'
@@ -19,7 +21,8 @@ def scene(node, reference, elements, threshold='0.9'):
     return answer.queried_objects
 
 
-def test_learned_scenes_form_a_hierarchy_in_words_and_recognitions_are_explained(web_node, page):
+def test_learned_scenes_form_a_hierarchy_in_words_and_recognitions_are_explained(
+        web_node, page):  # noqa: F811
     reference = 'web_scenes'
     assert call(web_node, reference, 'CREATE', SIT, 'false', 'PELLET', 'false').success
     for elements in (TWO_SPHERES, SPHERE_AND_CONE, ALL_THREE):
@@ -29,7 +32,8 @@ def test_learned_scenes_form_a_hierarchy_in_words_and_recognitions_are_explained
     tree = page.locator('#scene-classes')
     # SCENE-3 contains the other two: it is listed under each of them.
     for parent in ('SCENE-1', 'SCENE-2'):
-        expect(tree.locator(f'li[data-scene="{parent}"] li[data-scene="SCENE-3"]')).to_have_count(1)
+        nested = tree.locator(f'li[data-scene="{parent}"] li[data-scene="SCENE-3"]')
+        expect(nested).to_have_count(1)
     expect(tree.locator('li[data-scene="SCENE-1"] > .scene-definition li').first).to_be_visible()
     expect(tree.locator('li[data-scene="SCENE-1"] > .scene-definition')).to_contain_text(
         'at least 1 SPHERE below a SPHERE')
@@ -48,14 +52,15 @@ def test_learned_scenes_form_a_hierarchy_in_words_and_recognitions_are_explained
 
     # A scene sent meanwhile shows up on the open page, with its definition in words.
     scene(web_node, reference, TWO_CONES)
-    expect(tree.locator('li[data-scene="SCENE-4"]')).to_contain_text('at least 2 CONE along X',
-                                                                      timeout=30_000)
+    expect(tree.locator('li[data-scene="SCENE-4"]')).to_contain_text(
+        'at least 2 CONE along X', timeout=30_000)
     assert still_the_same_document(page)
 
 
-def test_a_reference_without_scenes_says_so(web_node, page):
+def test_a_reference_without_scenes_says_so(web_node, page):  # noqa: F811
     reference = 'web_no_scenes'
     assert call(web_node, reference, 'CREATE', SIT, 'false', 'PELLET', 'false').success
     open_reference(page, web_node, reference, 'scenes')
-    expect(page.locator('#scene-classes')).to_contain_text('No scene learned in this reference yet')
+    expect(page.locator('#scene-classes')).to_contain_text(
+        'No scene learned in this reference yet')
     expect(page.locator('#scene-recent')).to_contain_text('No scene shown to this reference')

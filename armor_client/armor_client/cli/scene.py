@@ -44,7 +44,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="learn unless a recognised class is more similar than this "
                              "(default: the file's, else 0.9)")
     parser.add_argument('--position-threshold', type=float, default=POSITION_THRESHOLD,
-                        help=f'metres, for right/behind/above and along (default {POSITION_THRESHOLD})')
+                        help='metres, for right/behind/above and along '
+                             f'(default {POSITION_THRESHOLD})')
     parser.add_argument('--axis-threshold', type=float, default=AXIS_THRESHOLD,
                         help=f'for parallel, perpendicular, coaxial (default {AXIS_THRESHOLD})')
     parser.add_argument('--classes', action='store_true',

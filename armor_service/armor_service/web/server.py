@@ -15,7 +15,7 @@ Routes (all read-only; none changes an ontology):
   GET  /api/recent?reference=&limit=&all=    the last directives (all=1: the page's own too)
   POST /api/references/{ref}/dl              {"expression"}: QUERY IND DL and QUERY CLASS DL
   POST /api/references/{ref}/sparql          {"query"}: QUERY SPARQL FORMATTED
-  GET  /api/references/{ref}/scenes[/recent] the SIT plugin's scene classes, last scenes (scenes.py)
+  GET  /api/references/{ref}/scenes[/recent] the SIT plugin's learned scenes, last scenes
   GET  /api/live                             WebSocket: the table of revisions after each change
 
 Bound to the loopback interface (the default), it answers only requests addressed to a loopback
