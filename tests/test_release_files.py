@@ -21,16 +21,18 @@ REPO = pathlib.Path(__file__).resolve().parents[1]
 
 def _versions() -> dict:
     found = {}
-    for package in ('armor_msgs', 'armor_contract', 'armor_service', 'armor_client'):
+    for package in ('armor_msgs', 'armor_contract', 'armor_service', 'armor_client',
+                    'sit_armor_injected_msgs', 'sit_armor_injected'):
         found[f'{package}/package.xml'] = ET.parse(REPO / package / 'package.xml').findtext(
             'version')
-    for package in ('armor_contract', 'armor_service', 'armor_client'):
+    for package in ('armor_contract', 'armor_service', 'armor_client', 'sit_armor_injected'):
         tree = ast.parse((REPO / package / 'setup.py').read_text())
         found[f'{package}/setup.py'] = next(
             keyword.value.value for node in ast.walk(tree) if isinstance(node, ast.Call)
             for keyword in node.keywords if keyword.arg == 'version')
-    pom = ET.parse(REPO / 'core' / 'pom.xml').getroot()
-    found['core/pom.xml'] = pom.findtext('{http://maven.apache.org/POM/4.0.0}version')
+    for pom_path in ('core/pom.xml', 'plugins/sit/pom.xml'):
+        pom = ET.parse(REPO / pom_path).getroot()
+        found[pom_path] = pom.findtext('{http://maven.apache.org/POM/4.0.0}version')
     found['CHANGELOG.md'] = re.search(r'^## (\S+)', (REPO / 'CHANGELOG.md').read_text(),
                                       re.MULTILINE).group(1)
     return found
@@ -53,7 +55,8 @@ def test_the_licence_is_the_apache_2_0_text_the_packages_declare():
     text = (REPO / 'LICENSE').read_text()
     assert 'Apache License' in text and 'Version 2.0, January 2004' in text
     assert 'TERMS AND CONDITIONS FOR USE, REPRODUCTION, AND DISTRIBUTION' in text
-    for package in ('armor_msgs', 'armor_contract', 'armor_service', 'armor_client'):
+    for package in ('armor_msgs', 'armor_contract', 'armor_service', 'armor_client',
+                    'sit_armor_injected_msgs', 'sit_armor_injected'):
         assert ET.parse(REPO / package / 'package.xml').findtext('license') == 'Apache-2.0'
 
 
