@@ -4,33 +4,35 @@ package io.github.armor.sit;
 import java.util.Map;
 import java.util.WeakHashMap;
 import org.semanticweb.owlapi.model.OWLOntology;
-import org.semanticweb.owlapi.model.OWLOntologyChange;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
 
 /**
- * How often each ontology has changed, counted by a listener on its manager: what is derived from
- * an ontology (its learned classes, its schema reasoned on) is kept while the count of it and of
- * its imports stays the same. Weak keys: an ontology that is gone takes its count with it.
+ * How often the ontologies of a manager have changed, counted by a listener on it: what is
+ * derived from an ontology (its learned classes, its schema reasoned on) is kept while the count
+ * stays the same. Counted per manager, which holds the ontology and its imports (a reference has
+ * a manager of its own), and compared by identity (ontologies are equal when their IRIs are);
+ * weak keys: a manager that is gone takes its count with it.
  */
 final class OntologyVersions {
-    private static final Map<OWLOntology, long[]> CHANGES = new WeakHashMap<>();
-    private static final Map<OWLOntologyManager, Boolean> WATCHED = new WeakHashMap<>();
+    private static final Map<OWLOntologyManager, long[]> CHANGES = new WeakHashMap<>();
 
     private OntologyVersions() {}
 
-    /** The number of changes made to the ontology and its imports since it was first asked about. */
+    /** The number of changes made in the ontology's manager since it was first asked about. */
     static synchronized long of(OWLOntology ontology) {
         OWLOntologyManager manager = ontology.getOWLOntologyManager();
-        if (WATCHED.put(manager, Boolean.TRUE) == null) {
-            manager.addOntologyChangeListener(OntologyVersions::changed);
+        long[] count = CHANGES.get(manager);
+        if (count == null) {
+            long[] made = new long[1];
+            CHANGES.put(manager, made);
+            // The listener holds the count, not the manager: the weak key can still go.
+            manager.addOntologyChangeListener(changes -> {
+                synchronized (OntologyVersions.class) {
+                    made[0]++;
+                }
+            });
+            count = made;
         }
-        // Counts only grow, so their sum moves with any change (an import added or removed is one).
-        return ontology.importsClosure().mapToLong(o -> CHANGES.computeIfAbsent(o, k -> new long[1])[0]).sum();
-    }
-
-    private static synchronized void changed(java.util.List<? extends OWLOntologyChange> changes) {
-        for (OWLOntologyChange change : changes) {
-            CHANGES.computeIfAbsent(change.getOntology(), k -> new long[1])[0]++;
-        }
+        return count[0];
     }
 }
