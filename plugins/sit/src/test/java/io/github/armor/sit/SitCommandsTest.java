@@ -224,6 +224,8 @@ class SitCommandsTest {
         ok(core, "APPLY");
         ok(core, "REASON");
         assertEquals(List.of(iri("table1")), ok(core, "QUERY IND CLASS", "Table").queriedObjects());
+        // ... and nothing of the undone scene waits to be applied with it.
+        assertEquals(Set.of("SCENE-1"), sceneClasses(core).keySet());
     }
 
     @Test
