@@ -367,3 +367,35 @@ def test_the_demo_teaches_recognises_and_learns(armor):
     assert any(line.startswith('  SCENE-4 (new arrangement')
                and 'contains SCENE-1, SCENE-2' in line for line in lines), lines
     armor.call(directive('t', 'scenes_demo_test', 'DROP'))
+
+
+def test_the_thresholds_are_node_parameters(own_node):
+    """Set on the running node, sit_position_threshold changes which relations a scene has."""
+    from rcl_interfaces.msg import Parameter, ParameterType, ParameterValue
+    from rcl_interfaces.srv import SetParameters
+    _, _, transport = own_node
+    setter = transport.node.create_client(SetParameters, '/scenes/armor_service/set_parameters')
+    assert setter.wait_for_service(timeout_sec=60)
+
+    def position_threshold(value):
+        done = setter.call_async(SetParameters.Request(parameters=[Parameter(
+            name='sit_position_threshold', value=ParameterValue(
+                type=ParameterType.PARAMETER_DOUBLE, double_value=value))]))
+        deadline = time.monotonic() + 60
+        while not done.done() and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert done.result().results[0].successful
+    assert transport.call(directive('t', 'wide', 'CREATE', '', '',
+                                    [SIT, 'false', 'PELLET', 'false']), timeout_s=120).success
+    client = SceneClient(transport.node, '/scenes')
+    try:
+        position_threshold(1.0)
+        # 0.8 apart on X and Z: within 1 m, so along X, Y and Z of each other, neither behind
+        # nor above (with 0.03 they are behind and above, and along nothing).
+        assert client.ok('wide', TWO_SPHERES).learned_scene_name == 'SCENE-1'
+    finally:
+        position_threshold(0.03)
+        client.close()
+        transport.node.destroy_client(setter)
+    [learned] = [json.loads(line) for line in query(transport, 'wide', 'QUERY SIT SCENES')]
+    assert {r['relation'] for r in learned['restrictions']} == {'alongX', 'alongY', 'alongZ'}
