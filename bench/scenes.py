@@ -38,8 +38,10 @@ SIZES = {
                       ('PELLET', 'buffered', 1000), ('PELLET', 'immediate', 10),
                       ('PELLET', 'immediate', 100), ('HERMIT', 'buffered', 10),
                       ('HERMIT', 'buffered', 100), ('HERMIT', 'immediate', 10),
-                      ('HERMIT', 'buffered', 1000)], 'samples': 10, 'budget_s': 60},
-    'smoke': {'rows': [('PELLET', 'buffered', 10)], 'samples': 2, 'budget_s': 30},
+                      ('HERMIT', 'buffered', 1000)], 'samples': 10, 'budget_s': 60,
+             'load_budget_s': 300},
+    'smoke': {'rows': [('PELLET', 'buffered', 10)], 'samples': 2, 'budget_s': 30,
+              'load_budget_s': 120},
 }
 
 
@@ -58,13 +60,13 @@ def plugin_classpath(snapshot: CoreSnapshot) -> str:
 
 
 def in_core(scratch: pathlib.Path, snapshot: CoreSnapshot, rows, samples: int,
-            budget_s: int) -> List[dict]:
+            budget_s: int, load_budget_s: int) -> List[dict]:
     """SceneBench's rows; it also writes the memories and probes the ROS side replays."""
     spec = ','.join(f'{r}:{m}:{n}' for r, m, n in rows)
     done = subprocess.run(['java', '-Xmx4g', '-XX:+UseSerialGC', '-cp', plugin_classpath(snapshot),
                            'io.github.armor.sit.SceneBench', str(scratch), spec, str(samples),
-                           str(budget_s)], capture_output=True, text=True, check=True,
-                          timeout=len(rows) * (budget_s * 3 + 600))
+                           str(budget_s), str(load_budget_s)], capture_output=True, text=True,
+                          check=True, timeout=len(rows) * (budget_s * 3 + load_budget_s + 600))
     for line in done.stderr.splitlines():
         if line.startswith('in the core'):
             print(line, file=sys.stderr, flush=True)
@@ -80,10 +82,12 @@ def elements(text: str) -> List[tuple]:
     return parsed
 
 
-def over_ros(scratch: pathlib.Path, snapshot: CoreSnapshot, rows, budget_s: int) -> List[dict]:
+def over_ros(scratch: pathlib.Path, snapshot: CoreSnapshot, rows, budget_s: int,
+             load_budget_s: int) -> List[dict]:
     """The same rows through sit_armor_injected, on a node of its own."""
     from sit_armor_injected.client import SceneServiceClient
-    node = BenchNode(scratch, snapshot, parameters={'reasoner_timeout_ms': str(budget_s * 1000)})
+    node = BenchNode(scratch, snapshot,
+                     parameters={'reasoner_timeout_ms': str(load_budget_s * 1000)})
     client = SceneServiceClient(node.transport.node, node.namespace, wait_s=120)
     measured = []
     try:
@@ -94,7 +98,7 @@ def over_ros(scratch: pathlib.Path, snapshot: CoreSnapshot, rows, budget_s: int)
             started = time.monotonic()
             loaded = node.call(reference, 'LOAD FILE', str(scratch / f'memory-{size}.ofn'), '',
                                'false', reasoner, str(mode == 'buffered').lower(),
-                               timeout_s=budget_s * 3 + 600)
+                               timeout_s=load_budget_s * 2 + 600)
             row['load_ms'] = (time.monotonic() - started) * 1000
             if not loaded.success:
                 row['failed'] = f'LOAD: {loaded.exit_code} {loaded.error_description}'
@@ -132,10 +136,11 @@ def over_ros(scratch: pathlib.Path, snapshot: CoreSnapshot, rows, budget_s: int)
 def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, scale: str) -> Dict[str, object]:
     sizes = SIZES[scale]
     rows = sizes['rows']
-    core_rows = in_core(scratch, snapshot, rows, sizes['samples'], sizes['budget_s'])
-    ros_rows = over_ros(scratch, snapshot, rows, sizes['budget_s'])
-    return {'samples': sizes['samples'], 'budget_s': sizes['budget_s'], 'core': core_rows,
-            'ros': ros_rows}
+    core_rows = in_core(scratch, snapshot, rows, sizes['samples'], sizes['budget_s'],
+                        sizes['load_budget_s'])
+    ros_rows = over_ros(scratch, snapshot, rows, sizes['budget_s'], sizes['load_budget_s'])
+    return {'samples': sizes['samples'], 'budget_s': sizes['budget_s'],
+            'load_budget_s': sizes['load_budget_s'], 'core': core_rows, 'ros': ros_rows}
 
 
 def _p50(row: dict, kind: str) -> str:
@@ -154,12 +159,16 @@ def render(results: Dict[str, object]) -> str:
 
         def with_cpu(kind):
             if kind not in core:
-                return 'over budget' if 'failed' not in core else core['failed'][:60]
+                return 'over budget' if 'failed' not in core else 'failed'
             return f'{core[kind]["p50_ms"]:.1f} ms ({core[kind + "_cpu"]["p50_ms"]:.0f} ms)'
+
+        def load(row):
+            return (f'> {results["load_budget_s"]} s' if 'LOAD' in row.get('failed', '')
+                    else f'{row["load_ms"] / 1000:.1f} s')
         ratio = (f'{ros["recognition"]["p50_ms"] / core["recognition"]["p50_ms"]:.2f}x'
                  if 'recognition' in ros and 'recognition' in core else '-')
         lines.append(f'| {core["reasoner"]} | {mode} | {core["learned_scenes"]:,} | '
-                     f'{core["load_ms"] / 1000:.1f} s | {with_cpu("recognition")} | '
+                     f'{load(core)} | {with_cpu("recognition")} | '
                      f'{_p50(ros, "recognition")} | {with_cpu("learning")} | '
                      f'{_p50(ros, "learning")} | {ratio} |')
     at_target = [(core, ros) for core, ros in zip(results['core'], results['ros'])
@@ -177,10 +186,11 @@ def render(results: Dict[str, object]) -> str:
             + ('-' if learning is None else f'{learning:.0f} ms '
                + ('(met)' if learning <= LEARNING_TARGET_MS else '(**not met**)')))
     return ('\n'.join(lines) + f'\n\n{results["samples"]} scenes of each kind per row, at most '
-            f'{results["budget_s"]} s each after the LOAD. Targets at {TARGET_SIZE} learned '
-            'scenes, '
-            f'over ROS 2 (recognition <= {RECOGNITION_TARGET_MS} ms, learning <= '
-            f'{LEARNING_TARGET_MS} ms): ' + '; '.join(verdicts) + '.\n')
+            f'{results["budget_s"]} s each after the LOAD (which gets '
+            f'{results["load_budget_s"]} s of reasoning); CPU: the JVM\'s CPU time per scene '
+            f'(10 ms steps). Targets at {TARGET_SIZE} learned scenes, over ROS 2 (recognition '
+            f'<= {RECOGNITION_TARGET_MS} ms, learning <= {LEARNING_TARGET_MS} ms): '
+            + '; '.join(verdicts) + '.\n')
 
 
 def main():

@@ -39,7 +39,7 @@ import org.semanticweb.owlapi.model.OWLOntologyStorageException;
  * scenes over ROS 2 beside it):
  *
  * <pre>
- *   java -cp ... io.github.armor.sit.SceneBench OUTPUT_DIR ROWS SAMPLES BUDGET_S [SEED]
+ *   java -cp ... io.github.armor.sit.SceneBench OUTPUT_DIR ROWS SAMPLES BUDGET_S LOAD_BUDGET_S [SEED]
  *   (ROWS: REASONER:buffered|immediate:SIZE,...  e.g. PELLET:buffered:100,HERMIT:immediate:10)
  * </pre>
  *
@@ -48,7 +48,7 @@ import org.semanticweb.owlapi.model.OWLOntologyStorageException;
  * by one, and gives the same classes), and {@code probes-N.json}: SAMPLES of those scenes to show
  * again (each is recognised, nothing is learned) and SAMPLES new ones (each is learned). Then, for
  * each row, it loads the memory into an ArmorCore with this plugin and times SIT SCENE on the
- * probes within BUDGET_S, the reference's reasoner brought up to date after every change
+ * probes within BUDGET_S (a LOAD gets LOAD_BUDGET_S of reasoning), the reference's reasoner brought up to date after every change
  * (immediate) or only when asked (buffered: as ROS 1 SIT loaded its ontology). Prints JSON.
  */
 public final class SceneBench {
@@ -224,7 +224,8 @@ public final class SceneBench {
         List<Row> rows = Arrays.stream(args[1].split(",")).map(Row::parse).toList();
         int samples = Integer.parseInt(args[2]);
         long budgetMs = Long.parseLong(args[3]) * 1000;
-        long seed = args.length > 4 ? Long.parseLong(args[4]) : 32;
+        long loadBudgetMs = Long.parseLong(args[4]) * 1000;
+        long seed = args.length > 5 ? Long.parseLong(args[5]) : 32;
         Files.createDirectories(output);
         java.util.Map<Integer, List<List<String>>> probes = new java.util.TreeMap<>();
         for (int size : rows.stream().map(Row::size).distinct().toList()) {
@@ -248,7 +249,8 @@ public final class SceneBench {
         }
         JsonArray measured = new JsonArray();
         for (Row row : rows) {
-            measured.add(measure(output, row, probes.get(row.size()).get(0), probes.get(row.size()).get(1), budgetMs));
+            measured.add(measure(output, row, probes.get(row.size()).get(0), probes.get(row.size()).get(1), budgetMs,
+                    loadBudgetMs));
         }
         JsonObject result = new JsonObject();
         result.add("rows", measured);
@@ -260,14 +262,15 @@ public final class SceneBench {
      * then new ones (learned), as many as fit in the budget after the LOAD. A LOAD whose reasoning
      * exceeds the budget is reported as such (the core's reasoner time limit stops it).
      */
-    private static JsonObject measure(Path scratch, Row row, List<String> known, List<String> fresh, long budgetMs) {
+    private static JsonObject measure(Path scratch, Row row, List<String> known, List<String> fresh, long budgetMs,
+                                      long loadBudgetMs) {
         JsonObject result = new JsonObject();
         result.addProperty("reasoner", row.reasoner());
         result.addProperty("buffered_reasoner", row.buffered());
         result.addProperty("learned_scenes", row.size());
         CommandTable table = CommandTable.load(SceneBench.class.getClassLoader());
         try (ArmorCore core = new ArmorCore(new CoreConfig(true, row.reasoner(), List.of(scratch), false, 600_000,
-                budgetMs, 0, CoreConfig.Durability.NONE), table)) {
+                loadBudgetMs, 0, CoreConfig.Durability.NONE), table)) {
             long started = System.nanoTime();
             double cpu = cpuMs();
             Response loaded = core.execute(Directive.of("bench", "memory", "LOAD", "FILE", "",
