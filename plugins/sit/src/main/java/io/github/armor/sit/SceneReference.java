@@ -54,9 +54,4 @@ public interface SceneReference {
     /** The named classes equivalent to a class, asserted or inferred (not itself). */
     Set<OWLClass> equivalentClasses(OWLClass owlClass);
 
-    /** An entity as the directive's answer writes it (full IRI or short name, as the node is set). */
-    String render(OWLClass owlClass);
-
-    /** Whether the directive is a journal record replayed at start rather than a client's request. */
-    boolean replaying();
 }

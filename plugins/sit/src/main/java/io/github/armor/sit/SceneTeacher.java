@@ -56,11 +56,6 @@ public final class SceneTeacher {
      * {@code threshold}. A scene with no relation changes nothing and is recognised as nothing.
      */
     public static Outcome evaluate(SceneReference reference, Scene scene, double threshold) {
-        return evaluate(reference, scene, threshold, true);
-    }
-
-    /** The same, always asking the reference's reasoner when {@code mayCount} is false (tests compare the two). */
-    static Outcome evaluate(SceneReference reference, Scene scene, double threshold, boolean mayCount) {
         List<SpatialRelations.Fact> facts = SpatialRelations.of(scene);
         List<SceneAssertion> assertions = SceneAssertion.of(scene, facts);
         if (assertions.isEmpty()) {
@@ -75,7 +70,7 @@ public final class SceneTeacher {
                 .forEach(p -> schema.add(reference.factory().getOWLDeclarationAxiom(p)));
         List<OWLAxiom> addedSchema = absent(ontology, schema);
 
-        SceneSchema rest = mayCount && learned.plain() ? SceneSchema.of(reference, vocabulary, learned) : null;
+        SceneSchema rest = learned.plain() ? SceneSchema.of(reference, vocabulary, learned) : null;
         Set<OWLClass> types;
         List<OWLOntologyChange> changes = new ArrayList<>();
         boolean inReference = rest == null || !rest.usable();

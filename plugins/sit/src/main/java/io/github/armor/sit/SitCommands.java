@@ -83,11 +83,9 @@ public final class SitCommands implements CommandGroup {
 
     /** A reference as the scene logic sees it, over the core's command context. */
     private static final class CoreReference implements SceneReference {
-        private final CommandContext context;
         private final Reference reference;
 
         CoreReference(CommandContext context) {
-            this.context = context;
             this.reference = context.reference();
         }
 
@@ -157,14 +155,5 @@ public final class SitCommands implements CommandGroup {
             return Inferences.union(asserted.filter(e -> !e.isAnonymous()).map(OWLClassExpression::asOWLClass), inferred);
         }
 
-        @Override
-        public String render(OWLClass owlClass) {
-            return context.render().entity(owlClass);
-        }
-
-        @Override
-        public boolean replaying() {
-            return context.replaying();
-        }
     }
 }

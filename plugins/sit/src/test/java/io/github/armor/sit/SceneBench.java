@@ -135,15 +135,6 @@ public final class SceneBench {
             return ontology;
         }
 
-        @Override
-        public String render(OWLClass owlClass) {
-            return owlClass.getIRI().toString();
-        }
-
-        @Override
-        public boolean replaying() {
-            return false;
-        }
     }
 
     /** An ontology holding the vocabulary and one learned class per scene, as SIT SCENE writes them. */
