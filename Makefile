@@ -36,6 +36,10 @@ demo-plan:  ## the tutorial, its robot following PDDL plans (pyperplan) over ARM
 	bash tools/setup.sh planner
 	source install/setup.bash && python examples/surveillance_demo.py --plan
 
+.PHONY: demo-scenes
+demo-scenes: setup  ## teach table-top arrangements by demonstration (scene service; make run first)
+	source install/setup.bash && python examples/scenes_demo.py
+
 .PHONY: cpp
 cpp:  ## build the C++ client armor_cpp into install/armor_cpp (docs/cpp-client.md)
 	bash tools/setup.sh cpp

@@ -69,7 +69,8 @@ def test_the_licence_is_the_apache_2_0_text_the_packages_declare():
     text = (REPO / 'LICENSE').read_text()
     assert 'Apache License' in text and 'Version 2.0, January 2004' in text
     assert 'TERMS AND CONDITIONS FOR USE, REPRODUCTION, AND DISTRIBUTION' in text
-    for package in ('armor_msgs', 'armor_contract', 'armor_service', 'armor_client'):
+    for package in ('armor_msgs', 'armor_contract', 'armor_service', 'armor_client',
+                    'sit_armor_injected_msgs', 'sit_armor_injected'):
         assert ET.parse(REPO / package / 'package.xml').findtext('license') == 'Apache-2.0'
 
 

@@ -45,6 +45,7 @@ step env        run    ""               "install/setup.bash and install/setup.sh
 step armor_msgs run    "venv"           "armor_msgs generated and compiled into install/armor_msgs"
 step web        run    "venv"           "the web view: aiohttp, and cytoscape.js from the npm registry"
 step python     run    "venv"           "armor_contract, armor_service, armor_client installed editable"
+step scenes     run    "venv"           "the scene service: sit_armor_injected_msgs and its node extension"
 step plugins    run    "core"           "the core's plugins (plugins/*/pom.xml) into install/armor_plugins"
 step lint       test   "venv"           "flake8, pydocstyle, mypy (tools/requirements-lint.txt)"
 step planner    test   "venv"           "pyperplan (tools/requirements-planning.txt), for PDDL plans"
@@ -309,6 +310,38 @@ step_cpp() {
     logged make -C "$BUILD/armor_cpp" -j"$(nproc)"
   rm -rf "$CPP_PREFIX"
   logged make -C "$BUILD/armor_cpp" install
+  done_in "$hash" "built"
+}
+
+# ---------------------------------------------------------------- scenes (SIT)
+# The scene service's interface package sit_armor_injected_msgs (cmake + make, as armor_msgs) and
+# the node extension serving it (sit_armor_injected/, editable), both into the venv's prefix, so
+# install/setup.bash needs no line for them. A reinstall first removes what the last one
+# installed (CMake's install manifest).
+SIT_LOGIC=2
+step_scenes() {
+  local hash build="$BUILD/sit_armor_injected_msgs"
+  hash="$(hash_str "$SIT_LOGIC" "$VENV_HASH" "$ROOT" \
+    "$(hash_tree sit_armor_injected_msgs/msg sit_armor_injected_msgs/srv)" \
+    "$(hash_of sit_armor_injected_msgs/package.xml sit_armor_injected_msgs/CMakeLists.txt \
+      sit_armor_injected/setup.py sit_armor_injected/package.xml)")"
+  scenes_installed() {
+    [ -d "$VENV/lib/python$PYVER/site-packages/sit_armor_injected_msgs" ] \
+      && "$VENV/bin/python" -c 'import sit_armor_injected' >/dev/null 2>&1
+  }
+  up_to_date "$hash" scenes_installed && return
+  begin "building sit_armor_injected_msgs with cmake and make, installing the scene extension"
+  fresh_build_dir "$build" "$ROOT/sit_armor_injected_msgs"
+  logged env AMENT_PREFIX_PATH="$VENV" cmake -S sit_armor_injected_msgs -B "$build" \
+    -DCMAKE_PREFIX_PATH="$VENV" -DCMAKE_INSTALL_PREFIX="$VENV" \
+    -DPython3_EXECUTABLE="$VENV/bin/python" -DBUILD_TESTING=OFF
+  logged env AMENT_PREFIX_PATH="$VENV" make -C "$build" -j"$(nproc)"
+  if [ -f "$build/install_manifest.txt" ]; then
+    # No stale files from removed interfaces (only paths inside the venv are touched).
+    grep "^$VENV/" "$build/install_manifest.txt" | while IFS= read -r f; do rm -f "$f"; done
+  fi
+  logged make -C "$build" install
+  venv_pip install --no-deps --no-build-isolation --config-settings editable_mode=compat -e sit_armor_injected
   done_in "$hash" "built"
 }
 

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +22,7 @@
 
 #include "armor_cpp/armor.hpp"
 #include "armor_cpp/rcl_transport.hpp"
+#include "armor_cpp/scenes.hpp"
 
 namespace
 {
@@ -310,6 +312,35 @@ TEST(Session, CallsFromSeveralThreadsAreAnsweredEachItsOwn)
   for (std::size_t i = 0; i < answers.size(); ++i) {
     EXPECT_EQ(answers[i], i % 2 ? (Names{"bedroom", "kitchen"}) : (Names{"robot1"}));
   }
+}
+
+// The scene plugin (docs/scenes.md) through learn_scene: learned, then recognised with 1.0;
+// a bad element is an ArgumentError that leaves no class behind.
+TEST(Scenes, ASceneIsLearnedThenRecognised)
+{
+  armor::Armor armor = session("cpp_scenes");
+  const std::string name = "cpp_scenes";
+  Names loaded = armor.references();
+  if (std::find(loaded.begin(), loaded.end(), name) != loaded.end()) {
+    armor.reference(name).drop();
+  }
+  armor::Reference table = armor.create(name, "http://www.emarolab.it/sit/simple");
+  std::vector<armor::SceneElement> scene{{"SPHERE", {0, 0, 0}}, {"CONE", {-0.8, -0.8, 0, 0, 0, 1}}};
+  armor::SceneAnswer learned = armor::learn_scene(table, scene, 0.9);
+  EXPECT_EQ(learned.learned_scene_name, "SCENE-1");
+  EXPECT_TRUE(learned.recognitions.empty());
+  armor::SceneAnswer again = armor::learn_scene(table, scene, 0.9);
+  EXPECT_EQ(again.learned_scene_name, "");
+  ASSERT_EQ(again.recognitions.size(), 1u);
+  EXPECT_EQ(again.recognitions[0].class_name, "SCENE-1");
+  EXPECT_DOUBLE_EQ(again.recognitions[0].similarity, 1.0);
+  EXPECT_THROW(
+    armor::learn_scene(table, {{"CUBE", {0, 0, 0}}, {"SPHERE", {1, 1, 1}}}, 0.9), armor::ArgumentError);
+  EXPECT_THROW(
+    armor::learn_scene(table, {{"SPHERE", {0, std::nan(""), 0}}, {"SPHERE", {1, 1, 1}}}, 0.9),
+    armor::ArgumentError);
+  EXPECT_EQ(table.subclasses("SCENE"), Names{"SCENE-1"});
+  table.drop();
 }
 
 }  // namespace

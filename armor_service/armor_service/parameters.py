@@ -145,9 +145,10 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
               'its changes wait for APPLY'),
     Parameter('preload_buffered_reasoner', 'boolean', False,
               'its reasoner sees changes only at REASON'),
-    Parameter('extensions', 'string_array', [],
+    Parameter('extensions', 'string_array', ['sit'],
               'Python extensions to load (entry points of group armor_service.extensions; '
-              'a string array or names separated by commas)', also_string=name_list),
+              'a string array or names separated by commas); sit is the scene service '
+              '(docs/scenes.md): name it too when you set this', also_string=name_list),
     Parameter('installed_plugins', 'boolean', True,
               'also load the plugins make setup installed (`$ARMOR_PLUGIN_DIRS`: the PDDL '
               'bridge), whatever plugin_dirs says'),
@@ -164,6 +165,14 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
     Parameter('web_port', 'integer', 0,
               'TCP port of the live, read-only web view of every reference (0 = off; make run '
               'uses 8080; docs/web-view.md)'),
+    # The scene service's relation thresholds (sit extension, docs/scenes.md); each request's
+    # directive carries the values it was answered with, so a restart replays it exactly.
+    Parameter('sit_position_threshold', 'double', 0.03,
+              'scene service: metres two centres must differ by to be right/behind/above, and '
+              'within which they lie along an axis', read_only=False),
+    Parameter('sit_axis_threshold', 'double', 0.05,
+              'scene service: how nearly two axes must be parallel or perpendicular, and the '
+              'squared distance within which a centre is on an axis', read_only=False),
     Parameter('web_host', 'string', '127.0.0.1',
               'address the web view listens on; any but a loopback address lets every machine '
               'that reaches it read every reference (docs/web-view.md)'),
