@@ -16,7 +16,7 @@ through ``call``.
 
 import json
 import pathlib
-from typing import Dict, Iterable, List
+from typing import Callable, Dict, Iterable, List, Sequence
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 BUILT_IN_FACES = REPO / 'armor_contract' / 'armor_contract' / 'faces.json'
@@ -29,6 +29,8 @@ PYTHON_READERS = {'none': 'Answers.nothing', 'entities': 'self.answers.entities'
                   'values': 'self.answers.values', 'expressions': 'self.answers.expressions'}
 CPP_RETURNS = {'entities': 'std::vector<std::string>', 'values': 'std::vector<Value>',
                'expressions': 'std::vector<std::string>'}
+# What writes one command's method, as lines.
+Method = Callable[[dict], Iterable[str]]
 # C++ keywords and names the generated code uses, as parameter names.
 CPP_RENAMED = {'new': 'new_name', 'old': 'old_name', 'class': 'cls', 'delete': 'deleted'}
 
@@ -152,17 +154,19 @@ class QueryFaces:
 '''
 
 
-def python_module(core: dict) -> str:
+def _file(core: dict, parts: Sequence[str], manipulation: Method, query: Method) -> str:
+    """parts[0], the manipulations' methods, parts[1], the queries' methods, then parts[2:]."""
     faced = faced_commands(core)
-    lines = [PYTHON_HEAD.rstrip('\n')]
-    for command in faced:
-        if command['kind'] == 'manipulation':
-            lines += _python_method(command)
-    lines.append(PYTHON_QUERIES.rstrip('\n'))
-    for command in faced:
-        if command['kind'] == 'query':
-            lines += _python_method(command)
+    lines = [parts[0].rstrip('\n')]
+    lines += [line for c in faced if c['kind'] == 'manipulation' for line in manipulation(c)]
+    lines.append(parts[1].rstrip('\n'))
+    lines += [line for c in faced if c['kind'] == 'query' for line in query(c)]
+    lines += [part.rstrip('\n') for part in parts[2:]]
     return '\n'.join(lines) + '\n'
+
+
+def python_module(core: dict) -> str:
+    return _file(core, [PYTHON_HEAD, PYTHON_QUERIES], _python_method, _python_method)
 
 
 def _constant(command: dict) -> str:
@@ -276,17 +280,7 @@ protected:
 
 
 def cpp_header(core: dict) -> str:
-    faced = faced_commands(core)
-    lines = [CPP_HEAD.rstrip('\n')]
-    for command in faced:
-        if command['kind'] == 'manipulation':
-            lines += _cpp_manipulation(command)
-    lines.append(CPP_MANIPULATION_TAIL.rstrip('\n'))
-    for command in faced:
-        if command['kind'] == 'query':
-            lines += _cpp_query(command)
-    lines.append(CPP_TAIL.rstrip('\n'))
-    return '\n'.join(lines) + '\n'
+    return _file(core, [CPP_HEAD, CPP_MANIPULATION_TAIL, CPP_TAIL], _cpp_manipulation, _cpp_query)
 
 
 def generated(core: dict) -> Dict[pathlib.Path, str]:
