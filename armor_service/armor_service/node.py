@@ -182,12 +182,15 @@ class ArmorService(Node):
         name = self._value('preload_reference')
         lost = [d for d in damage if d.get('reference') == name and d.get('restored') is False]
         if lost:
-            # Loading the file over it would hide the loss: the robot's changes would seem gone for no reason.
+            # Loading the file over it would hide the loss: the robot's changes would seem gone
+            # for no reason.
+            problems = '; '.join(lost[-1].get('problems', []))
             self.get_logger().error(
                 f'reference "{name}" could not be restored from the state directory '
-                f'({"; ".join(lost[-1].get("problems", []))}); NOT preloading {path} over it. Its files '
+                f'({problems}); NOT preloading {path} over it. Its files '
                 f'are in {lost[-1].get("kept_in")}. To start from {path} anyway, move that folder '
-                'away (keep it to recover by hand) and restart, or start with -p restore_state:=false')
+                'away (keep it to recover by hand) and restart, or start with '
+                '-p restore_state:=false')
             return
         listing = {'client_name': 'armor_service', 'reference_name': '', 'command': 'GET',
                    'primary_command_spec': 'ALL', 'secondary_command_spec': 'REFS', 'args': []}
