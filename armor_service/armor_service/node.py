@@ -18,6 +18,7 @@ from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
 from armor_msgs.msg import ArmorChange
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service import wire
+from armor_service.callback_guard import guarded
 from armor_service.core_process import CoreProcess, CoreUnavailable
 from armor_service.extensions import load_extensions
 from armor_service.installation import code_dirs
@@ -57,11 +58,14 @@ class ArmorService(Node):
             self, self._core, group, lambda: self._value('subscription_idle_s'),
             lambda: self._value('subscriptions_per_client'))
         self._core.start()
-        self.create_service(ArmorDirective, DIRECTIVE_SERVICE, self.directive_callback,
+        self.create_service(ArmorDirective, DIRECTIVE_SERVICE,
+                            guarded(self.directive_callback, self.get_logger(),
+                                    f'service {DIRECTIVE_SERVICE}', _refuse_directive),
                             qos_profile=SERVICE_QOS, callback_group=group)
         self.create_service(ArmorDirectiveList, LIST_SERVICE,
-                            self.directive_list_callback, qos_profile=SERVICE_QOS,
-                            callback_group=group)
+                            guarded(self.directive_list_callback, self.get_logger(),
+                                    f'service {LIST_SERVICE}', _refuse_list),
+                            qos_profile=SERVICE_QOS, callback_group=group)
         self._extensions = load_extensions(self, self._value('extensions'))
         self._web_view = self._start_web_view()
         self.get_logger().info(
@@ -264,6 +268,16 @@ class ArmorService(Node):
                 isinstance(item, str) for item in value)):
             raise RuntimeError(f'parameter {parameter.name} must be a string array or one string, '
                                f'got {value!r}')
+
+
+def _refuse_directive(request, response, description: str) -> None:
+    response.armor_response = wire.error_response(ExitCode.INTERNAL_ERROR, description)
+
+
+def _refuse_list(request, response, description: str) -> None:
+    response.success = False
+    response.armor_responses = [wire.error_response(ExitCode.INTERNAL_ERROR, description)
+                                for _ in request.armor_requests]
 
 
 def main(args=None, on_ready=None):
