@@ -5,6 +5,7 @@ import fcntl
 import os
 import pathlib
 import random
+import threading
 
 import pytest
 
@@ -83,6 +84,15 @@ def _stop_call_relay():
     yield
     from armor_client.cli import call_relay
     call_relay.stop()
+
+
+def call_service(client, request, timeout_s: float = 120.0):
+    """The answer of an rclpy service client spun by another thread; fails after timeout_s."""
+    done = threading.Event()
+    future = client.call_async(request)
+    future.add_done_callback(lambda _: done.set())
+    assert done.wait(timeout_s), f'no answer from {client.srv_name}'
+    return future.result()
 
 
 def iri(name: str) -> str:

@@ -29,7 +29,7 @@ from armor_contract.events import ANSWER_QOS, SUBSCRIBE_SERVICE, UNSUBSCRIBE_SER
 from armor_msgs.msg import ArmorAnswer
 from armor_msgs.srv import ArmorSubscribe, ArmorUnsubscribe
 from armor_service.node_harness import ArmorNodeProcess
-from conftest import REPO, TEST_ONTOLOGIES, start_node
+from conftest import call_service, REPO, TEST_ONTOLOGIES, start_node
 import pytest
 from test_contract_support import answer, failure, succeeded, unique_name
 from test_contract_support import load  # noqa: F401 (fixture)
@@ -722,11 +722,7 @@ class Subscriptions:
 
     @staticmethod
     def _call(client, request, timeout_s=120.0):
-        done = threading.Event()
-        future = client.call_async(request)
-        future.add_done_callback(lambda _: done.set())
-        assert done.wait(timeout_s), f'no answer from {client.srv_name}'
-        return future.result()
+        return call_service(client, request, timeout_s)
 
     def subscribe(self, client, reference, *words):
         command, primary, secondary, *args = words

@@ -14,7 +14,7 @@ from armor_client import ArmorTransport, directive
 from armor_contract.events import ANSWER_QOS, SUBSCRIBE_SERVICE, UNSUBSCRIBE_SERVICE
 from armor_msgs.msg import ArmorAnswer
 from armor_msgs.srv import ArmorSubscribe, ArmorUnsubscribe
-from conftest import iri, iris, ONTOLOGIES, start_node
+from conftest import call_service, iri, iris, ONTOLOGIES, start_node
 import pytest
 
 ROBOTICS = str(ONTOLOGIES / 'robotics.owl')
@@ -58,11 +58,7 @@ class Subscriber:
 
     @staticmethod
     def _call(client, request, timeout_s=120.0):
-        done = threading.Event()
-        future = client.call_async(request)
-        future.add_done_callback(lambda _: done.set())
-        assert done.wait(timeout_s), f'no answer from {client.srv_name}'
-        return future.result()
+        return call_service(client, request, timeout_s)
 
     def subscribe(self, reference, words, *args):
         command, primary, secondary = (words.split() + ['', '', ''])[:3]
