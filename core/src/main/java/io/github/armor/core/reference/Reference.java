@@ -17,9 +17,11 @@ import java.util.function.Function;
 import java.util.function.Supplier;
 import org.semanticweb.owlapi.model.OWLDataFactory;
 import org.semanticweb.owlapi.model.OWLDocumentFormat;
+import org.semanticweb.owlapi.model.OWLInverseObjectPropertiesAxiom;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
+import org.semanticweb.owlapi.model.RemoveAxiom;
 import org.semanticweb.owlapi.reasoner.InconsistentOntologyException;
 import org.semanticweb.owlapi.reasoner.InferenceType;
 import org.semanticweb.owlapi.reasoner.OWLReasoner;
@@ -426,10 +428,11 @@ public final class Reference {
         }
     }
 
-    private void enact(List<? extends OWLOntologyChange> changes) {
-        if (changes.isEmpty()) {
+    private void enact(List<? extends OWLOntologyChange> requested) {
+        if (requested.isEmpty()) {
             return;
         }
+        List<OWLOntologyChange> changes = requested.stream().map(Reference::asStored).toList();
         List<OWLOntologyChange> enacted = new ArrayList<>(manager.applyChangesAndGetDetails(changes).getEnactedChanges());
         modificationCount++;
         unreasonedChanges |= !enacted.isEmpty();
@@ -440,6 +443,22 @@ public final class Reference {
         if (!bufferedReasoner && !enacted.isEmpty()) {
             synchroniseReasoner();
         }
+    }
+
+    /**
+     * A removal of the axiom as the ontology stores it. InverseObjectProperties(p q) equals
+     * InverseObjectProperties(q p) but is written in the order it was added: undoing the removal
+     * of the other order would put back an axiom written differently (a SAVE, a digest and the
+     * journal would see a change that a rolled-back list must not make).
+     */
+    private static OWLOntologyChange asStored(OWLOntologyChange change) {
+        if (change.isRemoveAxiom() && change.getAxiom() instanceof OWLInverseObjectPropertiesAxiom inverse) {
+            return change.getOntology().inverseObjectPropertyAxioms(inverse.getFirstProperty())
+                    .filter(inverse::equals).findFirst()
+                    .map(stored -> (OWLOntologyChange) new RemoveAxiom(change.getOntology(), stored))
+                    .orElse(change);
+        }
+        return change;
     }
 
     /**
