@@ -1,0 +1,600 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.reasoning;
+
+import io.github.armor.core.reasoning.Builtins.DataValue;
+import io.github.armor.core.reasoning.RuleProgram.Atom;
+import io.github.armor.core.reasoning.RuleProgram.Image;
+import io.github.armor.core.reasoning.RuleProgram.Kind;
+import io.github.armor.core.reasoning.RuleProgram.Rule;
+import io.github.armor.core.reasoning.RuleProgram.Term;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.semanticweb.owlapi.model.AxiomType;
+import org.semanticweb.owlapi.model.IRI;
+import org.semanticweb.owlapi.model.OWLAxiom;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLDataProperty;
+import org.semanticweb.owlapi.model.OWLDataPropertyAssertionAxiom;
+import org.semanticweb.owlapi.model.OWLDifferentIndividualsAxiom;
+import org.semanticweb.owlapi.model.OWLIndividual;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.model.OWLObjectProperty;
+import org.semanticweb.owlapi.model.OWLObjectPropertyAssertionAxiom;
+import org.semanticweb.owlapi.model.OWLObjectPropertyExpression;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.parameters.Imports;
+
+/**
+ * The rules of a {@link RuleProgram} kept evaluated as the ABox changes: every conclusion with
+ * the number of matches of rule bodies that give it. A fact that appears (a type the modules
+ * found, an edge or a value asserted or concluded) is joined with the facts already there, from
+ * its own atom onwards in each rule that reads it; a fact that goes is joined the same way just
+ * before it goes. Each match is thereby counted once when its last fact appears and once when
+ * its first fact goes, so a conclusion holds exactly while its count is positive: retraction is
+ * exact without evaluating anything again (rules that feed one another in a cycle, where a
+ * count could be kept up by a fact's own consequence, are refused by the program). Appearing
+ * facts are handled before going ones, so a value replaced by another (the robot's clock) moves
+ * counts without making conclusions that stay flicker.
+ *
+ * <p>The work of a change is the matches it makes or ends: a moved robot joins its new place's
+ * neighbours; a new clock value joins every room's last visit, a comparison each (the rule says
+ * every room may have become urgent). What the modules reason on again is only what changed.
+ */
+final class RuleEngine {
+    /** A fact rules read or conclude: a type (object null), an edge (an individual) or a value (a data value). */
+    record Fact(Kind kind, Object predicate, OWLNamedIndividual subject, Object object) {}
+
+    private record Match(int rule, List<Object> binding) {}
+
+    /** An edge relation with, for each edge, how many asserted or concluded edges give it. */
+    private static final class Relation {
+        final Map<OWLNamedIndividual, Map<OWLNamedIndividual, Integer>> out = new HashMap<>();
+        final Map<OWLNamedIndividual, Set<OWLNamedIndividual>> in = new HashMap<>();
+    }
+
+    private final RuleProgram program;
+    private final OWLDataFactory factory;
+    private final Map<OWLObjectProperty, Relation> edges = new HashMap<>();
+    private final Map<OWLDataProperty, Map<OWLNamedIndividual, Map<DataValue, Integer>>> values = new HashMap<>();
+    private final Map<OWLClass, Set<OWLNamedIndividual>> typed = new HashMap<>();
+    private final Map<OWLNamedIndividual, Set<OWLClass>> typesOf = new HashMap<>();
+    private final Map<OWLNamedIndividual, List<Set<OWLIndividual>>> differentSets = new HashMap<>();
+    private final Map<Fact, Integer> support = new HashMap<>();
+    private final Map<OWLNamedIndividual, Set<Fact>> conclusionsAbout = new HashMap<>();
+    // Per batch: whether each conclusion that changed held before it.
+    private final Map<Fact, Boolean> heldBefore = new LinkedHashMap<>();
+    private String obstacle;
+
+    RuleEngine(RuleProgram program, OWLDataFactory factory) {
+        this.program = program;
+        this.factory = factory;
+        program.edgeProperties.forEach(p -> edges.put(p, new Relation()));
+        program.valueProperties.forEach(p -> values.put(p, new HashMap<>()));
+        program.bodyClasses.forEach(c -> typed.put(c, new HashSet<>()));
+    }
+
+    /** Why the rules cannot be evaluated here after all (a DifferentIndividuals atom on a pair not asserted different). */
+    String obstacle() {
+        return obstacle;
+    }
+
+    /** The classes of rule bodies (only their types are given to the engine). */
+    Set<OWLClass> bodyClasses() {
+        return program.bodyClasses;
+    }
+
+    /** Whether a DifferentIndividuals axiom change must be followed by {@link #load} (a rule reads difference). */
+    boolean readsDifference() {
+        return program.readsDifference;
+    }
+
+    /**
+     * Everything from the ontology as it is: its edges, values and differences, and the types
+     * {@code typesOf} gives (classes of rule bodies only). Answers the conclusions.
+     */
+    Set<Fact> load(OWLOntology ontology, java.util.function.Function<OWLClass, Collection<OWLNamedIndividual>> typesOf) {
+        edges.values().forEach(r -> {
+            r.out.clear();
+            r.in.clear();
+        });
+        values.values().forEach(Map::clear);
+        typed.values().forEach(Set::clear);
+        this.typesOf.clear();
+        support.clear();
+        conclusionsAbout.clear();
+        obstacle = null;
+        differentSets.clear();
+        ontology.axioms(AxiomType.DIFFERENT_INDIVIDUALS, Imports.INCLUDED).forEach(this::addDifference);
+        heldBefore.clear();
+        for (OWLClass owlClass : program.bodyClasses) {
+            for (OWLNamedIndividual individual : typesOf.apply(owlClass)) {
+                this.typesOf.computeIfAbsent(individual, k -> new HashSet<>()).add(owlClass);
+                typed.get(owlClass).add(individual);
+                appeared(new Fact(Kind.CLASS, owlClass, individual, null));
+            }
+        }
+        ontology.axioms(AxiomType.OBJECT_PROPERTY_ASSERTION, Imports.INCLUDED).forEach(a -> asserted(a, true));
+        ontology.axioms(AxiomType.DATA_PROPERTY_ASSERTION, Imports.INCLUDED).forEach(a -> asserted(a, true));
+        return netChanges();
+    }
+
+    private void addDifference(OWLDifferentIndividualsAxiom axiom) {
+        Set<OWLIndividual> members = new HashSet<>(axiom.getIndividualsAsList());
+        for (OWLIndividual member : members) {
+            if (member.isNamed()) {
+                differentSets.computeIfAbsent(member.asOWLNamedIndividual(), k -> new ArrayList<>()).add(members);
+            }
+        }
+    }
+
+    /**
+     * One batch: the asserted edges and values added and removed, and the new body-class types
+     * of the individuals whose types changed (an empty set for one that is gone). Answers the
+     * conclusions that appeared or went.
+     */
+    Set<Fact> update(List<OWLAxiom> added, List<OWLAxiom> removed, Map<OWLNamedIndividual, Set<OWLClass>> retyped) {
+        heldBefore.clear();
+        List<Fact> goneTypes = new ArrayList<>();
+        retyped.forEach((individual, now) -> {
+            Set<OWLClass> before = typesOf.getOrDefault(individual, Set.of());
+            for (OWLClass owlClass : now) {
+                if (!before.contains(owlClass)) {
+                    typesOf.computeIfAbsent(individual, k -> new HashSet<>()).add(owlClass);
+                    typed.get(owlClass).add(individual);
+                    appeared(new Fact(Kind.CLASS, owlClass, individual, null));
+                }
+            }
+            for (OWLClass owlClass : before) {
+                if (!now.contains(owlClass)) {
+                    goneTypes.add(new Fact(Kind.CLASS, owlClass, individual, null));
+                }
+            }
+        });
+        added.forEach(axiom -> asserted(axiom, true));
+        for (Fact fact : goneTypes) {
+            went(fact);
+            typed.get((OWLClass) fact.predicate).remove(fact.subject);
+            Set<OWLClass> left = typesOf.get(fact.subject);
+            left.remove((OWLClass) fact.predicate);
+            if (left.isEmpty()) {
+                typesOf.remove(fact.subject);
+            }
+        }
+        removed.forEach(axiom -> asserted(axiom, false));
+        return netChanges();
+    }
+
+    private Set<Fact> netChanges() {
+        Set<Fact> changed = new LinkedHashSet<>();
+        heldBefore.forEach((fact, before) -> {
+            if (before != support.containsKey(fact)) {
+                changed.add(fact);
+            }
+        });
+        heldBefore.clear();
+        return changed;
+    }
+
+    /** An asserted edge or value that appeared or went (other axioms are not read here). */
+    private void asserted(OWLAxiom axiom, boolean appears) {
+        if (axiom instanceof OWLObjectPropertyAssertionAxiom edge && edge.getSubject().isNamed()
+                && edge.getObject().isNamed()) {
+            OWLObjectPropertyExpression property = edge.getProperty();
+            OWLNamedIndividual subject = edge.getSubject().asOWLNamedIndividual();
+            OWLNamedIndividual object = edge.getObject().asOWLNamedIndividual();
+            if (property.isAnonymous()) {
+                edge(property.getNamedProperty(), object, subject, appears);
+            } else {
+                edge(property.asOWLObjectProperty(), subject, object, appears);
+            }
+        } else if (axiom instanceof OWLDataPropertyAssertionAxiom value && value.getSubject().isNamed()) {
+            value(value.getProperty().asOWLDataProperty(), value.getSubject().asOWLNamedIndividual(),
+                    DataValue.of(value.getObject()), appears);
+        }
+    }
+
+    /** An edge of {@code property}, asserted or concluded, that appeared or went: its images move. */
+    private void edge(OWLObjectProperty property, OWLNamedIndividual subject, OWLNamedIndividual object,
+                      boolean appears) {
+        for (Image image : program.imagesOf(property)) {
+            OWLNamedIndividual from = image.reversed() ? object : subject;
+            OWLNamedIndividual to = image.reversed() ? subject : object;
+            Relation relation = edges.get(image.property());
+            Map<OWLNamedIndividual, Integer> targets = relation.out.computeIfAbsent(from, k -> new HashMap<>());
+            int count = targets.getOrDefault(to, 0);
+            Fact fact = new Fact(Kind.EDGE, image.property(), from, to);
+            if (appears) {
+                targets.put(to, count + 1);
+                if (count == 0) {
+                    relation.in.computeIfAbsent(to, k -> new HashSet<>()).add(from);
+                    appeared(fact);
+                }
+            } else if (count == 1) {
+                went(fact);
+                targets.remove(to);
+                if (targets.isEmpty()) {
+                    relation.out.remove(from);
+                }
+                Set<OWLNamedIndividual> sources = relation.in.get(to);
+                sources.remove(from);
+                if (sources.isEmpty()) {
+                    relation.in.remove(to);
+                }
+            } else if (count > 1) {
+                targets.put(to, count - 1);
+            }
+        }
+    }
+
+    private void value(OWLDataProperty property, OWLNamedIndividual subject, DataValue value, boolean appears) {
+        for (OWLDataProperty image : program.imagesOf(property)) {
+            Map<OWLNamedIndividual, Map<DataValue, Integer>> bySubject = values.get(image);
+            Map<DataValue, Integer> held = bySubject.computeIfAbsent(subject, k -> new LinkedHashMap<>());
+            int count = held.getOrDefault(value, 0);
+            Fact fact = new Fact(Kind.VALUE, image, subject, value);
+            if (appears) {
+                if (count == 0) {
+                    // A value asserted twice (two literals of one value) is kept with the first literal.
+                    held.put(value, 1);
+                    appeared(fact);
+                } else {
+                    held.put(value, count + 1);
+                }
+            } else if (count == 1) {
+                went(fact);
+                held.remove(value);
+                if (held.isEmpty()) {
+                    bySubject.remove(subject);
+                }
+            } else if (count > 1) {
+                held.put(value, count - 1);
+            }
+        }
+    }
+
+    /** A fact now in the store: the matches it completes are counted. */
+    private void appeared(Fact fact) {
+        for (Match match : matchesWith(fact)) {
+            for (Fact conclusion : conclusions(match)) {
+                int count = support.getOrDefault(conclusion, 0);
+                support.put(conclusion, count + 1);
+                if (count == 0) {
+                    heldBefore.putIfAbsent(conclusion, false);
+                    concluded(conclusion, true);
+                }
+            }
+        }
+    }
+
+    /** A fact about to leave the store: the matches it was part of are uncounted. */
+    private void went(Fact fact) {
+        for (Match match : matchesWith(fact)) {
+            for (Fact conclusion : conclusions(match)) {
+                int count = support.get(conclusion);
+                if (count == 1) {
+                    support.remove(conclusion);
+                    heldBefore.putIfAbsent(conclusion, true);
+                    concluded(conclusion, false);
+                } else {
+                    support.put(conclusion, count - 1);
+                }
+            }
+        }
+    }
+
+    /** A conclusion that appeared or went: an edge or value concluded is read like an asserted one. */
+    private void concluded(Fact conclusion, boolean appears) {
+        if (appears) {
+            conclusionsAbout.computeIfAbsent(conclusion.subject, k -> new LinkedHashSet<>()).add(conclusion);
+            if (conclusion.object instanceof OWLNamedIndividual object) {
+                conclusionsAbout.computeIfAbsent(object, k -> new LinkedHashSet<>()).add(conclusion);
+            }
+        } else {
+            forget(conclusion.subject, conclusion);
+            if (conclusion.object instanceof OWLNamedIndividual object) {
+                forget(object, conclusion);
+            }
+        }
+        if (conclusion.kind == Kind.EDGE) {
+            edge((OWLObjectProperty) conclusion.predicate, conclusion.subject, (OWLNamedIndividual) conclusion.object,
+                    appears);
+        } else if (conclusion.kind == Kind.VALUE) {
+            value((OWLDataProperty) conclusion.predicate, conclusion.subject, (DataValue) conclusion.object, appears);
+        }
+    }
+
+    private void forget(OWLNamedIndividual individual, Fact conclusion) {
+        Set<Fact> about = conclusionsAbout.get(individual);
+        if (about != null) {
+            about.remove(conclusion);
+            if (about.isEmpty()) {
+                conclusionsAbout.remove(individual);
+            }
+        }
+    }
+
+    /** Whether the rules concluded anything about the individual that the modules must reason with. */
+    boolean concludedAbout(OWLNamedIndividual individual) {
+        Set<Fact> about = conclusionsAbout.get(individual);
+        return about != null && about.stream().anyMatch(f -> program.seenBySchema(f.predicate));
+    }
+
+    /**
+     * The conclusions about a member of a module, as assertions the module is reasoned on with:
+     * an edge to an individual outside the module becomes what it says about this end (as
+     * {@link AboxModules#axiomsOf} does with asserted ones; such a property does not link).
+     */
+    List<OWLAxiom> conclusionsAbout(OWLNamedIndividual individual, Set<OWLIndividual> module) {
+        List<OWLAxiom> axioms = new ArrayList<>();
+        for (Fact fact : conclusionsAbout.getOrDefault(individual, Set.of())) {
+            if (!program.seenBySchema(fact.predicate)) {
+                continue;
+            }
+            switch (fact.kind) {
+                case CLASS -> axioms.add(factory.getOWLClassAssertionAxiom((OWLClass) fact.predicate, individual));
+                case VALUE -> axioms.add(factory.getOWLDataPropertyAssertionAxiom((OWLDataProperty) fact.predicate,
+                        individual, ((DataValue) fact.object).literal));
+                default -> {
+                    OWLObjectProperty property = (OWLObjectProperty) fact.predicate;
+                    OWLNamedIndividual object = (OWLNamedIndividual) fact.object;
+                    if (module.contains(fact.subject) && module.contains(object)) {
+                        axioms.add(factory.getOWLObjectPropertyAssertionAxiom(property, fact.subject, object));
+                    } else {
+                        OWLObjectPropertyExpression end = fact.subject.equals(individual) ? property
+                                : property.getInverseProperty();
+                        axioms.add(factory.getOWLClassAssertionAxiom(factory.getOWLObjectSomeValuesFrom(end,
+                                factory.getOWLThing()), individual));
+                    }
+                }
+            }
+        }
+        return axioms;
+    }
+
+    /** The individuals related to {@code individual} by a property the engine keeps, or null when it keeps none such. */
+    Set<OWLNamedIndividual> objectValues(OWLNamedIndividual individual, OWLObjectPropertyExpression property) {
+        Relation relation = edges.get(property.getNamedProperty());
+        if (relation == null) {
+            return null;
+        }
+        if (property.isAnonymous()) {
+            return Set.copyOf(relation.in.getOrDefault(individual, Set.of()));
+        }
+        return Set.copyOf(relation.out.getOrDefault(individual, Map.of()).keySet());
+    }
+
+    /** The conclusions held now (for tests and the log). */
+    int conclusions() {
+        return support.size();
+    }
+
+    /** Every match of a rule body that uses the fact, each once. */
+    private Set<Match> matchesWith(Fact fact) {
+        Set<Match> found = new LinkedHashSet<>();
+        List<Rule> rules = program.rules;
+        for (int r = 0; r < rules.size(); r++) {
+            Rule rule = rules.get(r);
+            for (int position = 0; position < rule.body().size(); position++) {
+                Atom atom = rule.body().get(position);
+                if (atom.kind() != fact.kind || !atom.predicate().equals(fact.predicate)) {
+                    continue;
+                }
+                Object[] binding = new Object[rule.variables()];
+                if (unify(atom.term(0), fact.subject, binding)
+                        && (fact.kind == Kind.CLASS || unify(atom.term(1), fact.object, binding))) {
+                    join(r, rule, rule.plans()[position], 0, binding, null, found);
+                }
+            }
+        }
+        return found;
+    }
+
+    private static boolean unify(Term term, Object value, Object[] binding) {
+        if (!term.isVariable()) {
+            return term.constant().equals(value);
+        }
+        Object bound = binding[term.variable()];
+        if (bound == null) {
+            binding[term.variable()] = value;
+            return true;
+        }
+        return bound.equals(value);
+    }
+
+    private static Object resolve(Term term, Object[] binding) {
+        return term.isVariable() ? binding[term.variable()] : term.constant();
+    }
+
+    /**
+     * Joins the atoms of {@code plan} from {@code step} on; {@code unsure} names a pair a
+     * DifferentIndividuals atom could not decide (a complete match with one is an obstacle).
+     */
+    private void join(int ruleNumber, Rule rule, int[] plan, int step, Object[] binding, String unsure,
+                      Set<Match> found) {
+        if (step == plan.length) {
+            if (unsure != null) {
+                if (obstacle == null) {
+                    obstacle = "a SWRL rule's DifferentIndividuals atom matched individuals not asserted different ("
+                            + unsure + ")";
+                }
+                return;
+            }
+            found.add(new Match(ruleNumber, Arrays.asList(binding.clone())));
+            return;
+        }
+        Atom atom = rule.body().get(plan[step]);
+        switch (atom.kind()) {
+            case CLASS -> {
+                Object value = resolve(atom.term(0), binding);
+                if (value != null) {
+                    if (value instanceof OWLNamedIndividual individual
+                            && typesOf.getOrDefault(individual, Set.of()).contains((OWLClass) atom.predicate())) {
+                        join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                    }
+                    return;
+                }
+                for (OWLNamedIndividual individual : List.copyOf(typed.get((OWLClass) atom.predicate()))) {
+                    binding[atom.term(0).variable()] = individual;
+                    join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                }
+                binding[atom.term(0).variable()] = null;
+            }
+            case EDGE -> joinEdge(ruleNumber, rule, plan, step, binding, unsure, found, atom);
+            case VALUE -> joinValue(ruleNumber, rule, plan, step, binding, unsure, found, atom);
+            case BUILTIN -> {
+                IRI builtin = (IRI) atom.predicate();
+                Term[] terms = atom.terms();
+                if (Builtins.binds(builtin)) {
+                    DataValue[] operands = new DataValue[terms.length - 1];
+                    for (int i = 1; i < terms.length; i++) {
+                        if (!(resolve(terms[i], binding) instanceof DataValue operand)) {
+                            return;
+                        }
+                        operands[i - 1] = operand;
+                    }
+                    DataValue result = Builtins.compute(builtin, operands);
+                    if (result == null) {
+                        return;
+                    }
+                    Object bound = resolve(terms[0], binding);
+                    if (bound == null) {
+                        binding[terms[0].variable()] = result;
+                        join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                        binding[terms[0].variable()] = null;
+                    } else if (result.equals(bound)) {
+                        join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                    }
+                } else if (resolve(terms[0], binding) instanceof DataValue left
+                        && resolve(terms[1], binding) instanceof DataValue right && Builtins.test(builtin, left, right)) {
+                    join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                }
+            }
+            case SAME -> {
+                if (resolve(atom.term(0), binding).equals(resolve(atom.term(1), binding))) {
+                    join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                }
+            }
+            case DIFFERENT -> {
+                Object first = resolve(atom.term(0), binding);
+                Object second = resolve(atom.term(1), binding);
+                if (first.equals(second)) {
+                    return;
+                }
+                boolean asserted = differentSets.getOrDefault(first, List.of()).stream()
+                        .anyMatch(set -> set.contains(second));
+                join(ruleNumber, rule, plan, step + 1, binding, asserted || unsure != null ? unsure
+                        : first + " and " + second, found);
+            }
+        }
+    }
+
+    private void joinEdge(int ruleNumber, Rule rule, int[] plan, int step, Object[] binding, String unsure,
+                          Set<Match> found, Atom atom) {
+        Relation relation = edges.get((OWLObjectProperty) atom.predicate());
+        Object subject = resolve(atom.term(0), binding);
+        Object object = resolve(atom.term(1), binding);
+        if (subject != null) {
+            Map<OWLNamedIndividual, Integer> targets = relation.out.getOrDefault(subject, Map.of());
+            if (object != null) {
+                if (targets.containsKey(object)) {
+                    join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                }
+                return;
+            }
+            for (OWLNamedIndividual target : List.copyOf(targets.keySet())) {
+                binding[atom.term(1).variable()] = target;
+                join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+            }
+            binding[atom.term(1).variable()] = null;
+            return;
+        }
+        if (object != null) {
+            for (OWLNamedIndividual source : List.copyOf(relation.in.getOrDefault(object, Set.of()))) {
+                binding[atom.term(0).variable()] = source;
+                join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+            }
+            binding[atom.term(0).variable()] = null;
+            return;
+        }
+        boolean loop = atom.term(0).variable() == atom.term(1).variable();
+        for (Map.Entry<OWLNamedIndividual, Map<OWLNamedIndividual, Integer>> entry
+                : List.copyOf(relation.out.entrySet())) {
+            binding[atom.term(0).variable()] = entry.getKey();
+            for (OWLNamedIndividual target : List.copyOf(entry.getValue().keySet())) {
+                if (loop && !target.equals(entry.getKey())) {
+                    continue;
+                }
+                binding[atom.term(1).variable()] = target;
+                join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+            }
+        }
+        binding[atom.term(0).variable()] = null;
+        binding[atom.term(1).variable()] = null;
+    }
+
+    private void joinValue(int ruleNumber, Rule rule, int[] plan, int step, Object[] binding, String unsure,
+                           Set<Match> found, Atom atom) {
+        Map<OWLNamedIndividual, Map<DataValue, Integer>> bySubject = values.get((OWLDataProperty) atom.predicate());
+        Object subject = resolve(atom.term(0), binding);
+        Object value = resolve(atom.term(1), binding);
+        if (subject != null) {
+            Map<DataValue, Integer> held = bySubject.getOrDefault(subject, Map.of());
+            if (value != null) {
+                if (held.containsKey(value)) {
+                    join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                }
+                return;
+            }
+            for (DataValue each : List.copyOf(held.keySet())) {
+                binding[atom.term(1).variable()] = each;
+                join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+            }
+            binding[atom.term(1).variable()] = null;
+            return;
+        }
+        for (Map.Entry<OWLNamedIndividual, Map<DataValue, Integer>> entry : List.copyOf(bySubject.entrySet())) {
+            binding[atom.term(0).variable()] = entry.getKey();
+            for (DataValue each : List.copyOf(entry.getValue().keySet())) {
+                if (value != null && !value.equals(each)) {
+                    continue;
+                }
+                if (value == null) {
+                    binding[atom.term(1).variable()] = each;
+                }
+                join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+            }
+        }
+        binding[atom.term(0).variable()] = null;
+        if (value == null) {
+            binding[atom.term(1).variable()] = null;
+        }
+    }
+
+    /** The conclusions of a match: its rule's head, with the match's values. */
+    private List<Fact> conclusions(Match match) {
+        Rule rule = program.rules.get(match.rule);
+        Object[] binding = match.binding.toArray();
+        List<Fact> facts = new ArrayList<>(rule.head().size());
+        for (Atom atom : rule.head()) {
+            if (!(resolve(atom.term(0), binding) instanceof OWLNamedIndividual subject)) {
+                continue;
+            }
+            Object object = atom.kind() == Kind.CLASS ? null : resolve(atom.term(1), binding);
+            if (atom.kind() == Kind.VALUE && !(object instanceof DataValue value && value.literal != null)
+                    || atom.kind() == Kind.EDGE && !(object instanceof OWLNamedIndividual)) {
+                continue;
+            }
+            facts.add(new Fact(atom.kind(), atom.predicate(), subject, object));
+        }
+        return facts;
+    }
+}
