@@ -61,7 +61,7 @@ final class HornSchema {
         for (OWLAxiom axiom : axioms) {
             String found = obstacle(axiom);
             if (found != null) {
-                return Optional.of(found + " (" + axiom + ")");
+                return Optional.of(found + ": " + axiom);
             }
         }
         return Optional.empty();
@@ -70,11 +70,11 @@ final class HornSchema {
     private static String obstacle(OWLAxiom axiom) {
         if (axiom.isOfType(AxiomType.SAME_INDIVIDUAL, AxiomType.FUNCTIONAL_OBJECT_PROPERTY,
                 AxiomType.INVERSE_FUNCTIONAL_OBJECT_PROPERTY, AxiomType.HAS_KEY)) {
-            return "it can make two individuals one";
+            return "an axiom that can make two individuals one";
         }
         if (axiom.nestedClassExpressions().anyMatch(e -> e.getClassExpressionType().getName().matches(
                 "ObjectMaxCardinality|ObjectExactCardinality|ObjectOneOf"))) {
-            return "it can make two individuals one";
+            return "an axiom that can make two individuals one";
         }
         boolean horn;
         if (axiom instanceof OWLSubClassOfAxiom sub) {
@@ -101,7 +101,7 @@ final class HornSchema {
             // Property axioms, assertions, declarations: no choice in them (the equality ones are above).
             horn = true;
         }
-        return horn ? null : "it lets a model choose (not Horn)";
+        return horn ? null : "an axiom that lets a model choose (not Horn)";
     }
 
     /** Whether the expression may stand on the right of a subclass axiom. */

@@ -154,7 +154,7 @@ final class RuleProgram {
         all.addAll(aboxShapes);
         Optional<String> notHorn = HornSchema.obstacle(all);
         if (notHorn.isPresent()) {
-            return new Compiled(null, "SWRL rules with an axiom that needs reasoning by cases: " + notHorn.get());
+            return new Compiled(null, "SWRL rules with " + notHorn.get());
         }
         PropertyHierarchy hierarchy = new PropertyHierarchy(all);
         List<Rule> read = new ArrayList<>();
