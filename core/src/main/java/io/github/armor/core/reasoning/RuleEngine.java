@@ -16,6 +16,7 @@ import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 import org.semanticweb.owlapi.model.AxiomType;
 import org.semanticweb.owlapi.model.IRI;
@@ -159,7 +160,10 @@ final class RuleEngine {
                 }
             }
         });
-        added.forEach(axiom -> asserted(axiom, true));
+        List<OWLAxiom> adding = new ArrayList<>(added);
+        List<OWLAxiom> removing = new ArrayList<>(removed);
+        replacements(adding, removing);
+        adding.forEach(axiom -> asserted(axiom, true));
         for (Fact fact : goneTypes) {
             went(fact);
             typed.get((OWLClass) fact.predicate).remove(fact.subject);
@@ -169,8 +173,200 @@ final class RuleEngine {
                 typesOf.remove(fact.subject);
             }
         }
-        removed.forEach(axiom -> asserted(axiom, false));
+        removing.forEach(axiom -> asserted(axiom, false));
         return netChanges();
+    }
+
+    /**
+     * The data values replaced in a batch (one value of a property of an individual goes, another
+     * comes: the robot's clock, a room's last visit) taken out of {@code adding} and
+     * {@code removing} and handled as one step each ({@link #replaced}).
+     */
+    private void replacements(List<OWLAxiom> adding, List<OWLAxiom> removing) {
+        Map<List<Object>, OWLDataPropertyAssertionAxiom> gone = new HashMap<>();
+        for (OWLAxiom axiom : removing) {
+            if (axiom instanceof OWLDataPropertyAssertionAxiom value && value.getSubject().isNamed()) {
+                gone.putIfAbsent(List.of(value.getProperty(), value.getSubject()), value);
+            }
+        }
+        if (gone.isEmpty()) {
+            return;
+        }
+        for (OWLAxiom axiom : List.copyOf(adding)) {
+            if (axiom instanceof OWLDataPropertyAssertionAxiom value && value.getSubject().isNamed()) {
+                OWLDataPropertyAssertionAxiom old = gone.remove(List.of(value.getProperty(), value.getSubject()));
+                if (old != null) {
+                    adding.remove(axiom);
+                    removing.remove(old);
+                    for (OWLDataProperty image : program.imagesOf(value.getProperty().asOWLDataProperty())) {
+                        replaced(image, value.getSubject().asOWLNamedIndividual(), DataValue.of(old.getObject()),
+                                DataValue.of(value.getObject()));
+                    }
+                }
+            }
+        }
+    }
+
+    /**
+     * A value of a kept data property replaced by another, as one step: each rule that reads the
+     * property once is joined from the old and the new value side by side ({@link #pairedJoin}),
+     * so a match that holds, with the same conclusions, before and after costs its join and no
+     * count; only the matches that start or end move counts. A rule that reads the property twice,
+     * or a value held twice, takes the two facts one after the other instead (new first).
+     */
+    private void replaced(OWLDataProperty image, OWLNamedIndividual subject, DataValue old, DataValue now) {
+        Map<DataValue, Integer> held = values.get(image).computeIfAbsent(subject, k -> new LinkedHashMap<>());
+        if (old.equals(now) || !program.readOnce(image) || held.getOrDefault(old, 0) != 1 || held.containsKey(now)) {
+            valueOf(image, subject, now, true);
+            valueOf(image, subject, old, false);
+            return;
+        }
+        Map<Fact, Integer> delta = new LinkedHashMap<>();
+        List<Rule> rules = program.rules;
+        for (int r = 0; r < rules.size(); r++) {
+            Rule rule = rules.get(r);
+            for (int position = 0; position < rule.body().size(); position++) {
+                Atom atom = rule.body().get(position);
+                if (atom.kind() != Kind.VALUE || !atom.predicate().equals(image)) {
+                    continue;
+                }
+                Object[] before = new Object[rule.variables()];
+                Object[] after = new Object[rule.variables()];
+                boolean was = unify(atom.term(0), subject, before) && unify(atom.term(1), old, before);
+                boolean is = unify(atom.term(0), subject, after) && unify(atom.term(1), now, after);
+                pairedJoin(r, rule, rule.plans()[position], 0, before, after, was, is, null, delta);
+            }
+        }
+        // The store holds the new value before any conclusion moves (the step is one change).
+        held.remove(old);
+        held.put(now, 1);
+        List<Fact> came = new ArrayList<>();
+        List<Fact> went = new ArrayList<>();
+        delta.forEach((conclusion, change) -> {
+            if (change == 0) {
+                return;
+            }
+            int count = support.getOrDefault(conclusion, 0);
+            int next = count + change;
+            if (next <= 0) {
+                support.remove(conclusion);
+            } else {
+                support.put(conclusion, next);
+            }
+            if (count == 0 && next > 0) {
+                came.add(conclusion);
+            } else if (count > 0 && next <= 0) {
+                went.add(conclusion);
+            }
+        });
+        for (Fact conclusion : came) {
+            heldBefore.putIfAbsent(conclusion, false);
+            concluded(conclusion, true);
+        }
+        for (Fact conclusion : went) {
+            heldBefore.putIfAbsent(conclusion, true);
+            concluded(conclusion, false);
+        }
+    }
+
+    /**
+     * Joins a rule's remaining atoms from two bindings at once, the one with the old value
+     * ({@code before}) and the one with the new ({@code after}), alive or not: an atom whose
+     * terms are the same in both is joined once for both (a room enumerated once), one that
+     * differs is tested in each (the clock's subtraction and comparison, twice per room). Where
+     * an atom would enumerate from terms that differ, the two go on apart. At the end the
+     * conclusions of the match before are uncounted and those after counted, in {@code delta};
+     * equal ones cancel.
+     */
+    private void pairedJoin(int ruleNumber, Rule rule, int[] plan, int step, Object[] before, Object[] after,
+                            boolean was, boolean is, String unsure, Map<Fact, Integer> delta) {
+        if (!was && !is) {
+            return;
+        }
+        if (step == plan.length) {
+            if (unsure != null) {
+                if (obstacle == null) {
+                    obstacle = "a SWRL rule's DifferentIndividuals atom matched individuals not asserted different ("
+                            + unsure + ")";
+                }
+                return;
+            }
+            if (was) {
+                conclusions(new Match(ruleNumber, Arrays.asList(before))).forEach(f -> delta.merge(f, -1, Integer::sum));
+            }
+            if (is) {
+                conclusions(new Match(ruleNumber, Arrays.asList(after))).forEach(f -> delta.merge(f, 1, Integer::sum));
+            }
+            return;
+        }
+        Atom atom = rule.body().get(plan[step]);
+        boolean same = was && is;
+        boolean binds = false;
+        for (Term term : atom.terms()) {
+            if (term.isVariable()) {
+                Object one = before[term.variable()];
+                Object other = after[term.variable()];
+                same &= one == null ? other == null : one.equals(other);
+                binds |= one == null || other == null;
+            }
+        }
+        if (same) {
+            // One join for both: every variable it binds is bound alike in both.
+            joinOne(rule, plan[step], before.clone(), unsure, (b, u) ->
+                    pairedJoin(ruleNumber, rule, plan, step + 1, b.clone(), mergeBound(after, b), true, true, u, delta));
+            return;
+        }
+        if (!binds || atom.kind() == Kind.BUILTIN && Builtins.binds((IRI) atom.predicate())) {
+            // A test (or a computed value) that reads what differs: each world on its own, still side by side.
+            Object[] nextBefore = before.clone();
+            Object[] nextAfter = after.clone();
+            boolean[] alive = {false, false};
+            String[] unsures = {unsure, unsure};
+            if (was) {
+                joinOne(rule, plan[step], before.clone(), unsure, (b, u) -> {
+                    System.arraycopy(b, 0, nextBefore, 0, b.length);
+                    alive[0] = true;
+                    unsures[0] = u;
+                });
+            }
+            if (is) {
+                joinOne(rule, plan[step], after.clone(), unsure, (b, u) -> {
+                    System.arraycopy(b, 0, nextAfter, 0, b.length);
+                    alive[1] = true;
+                    unsures[1] = u;
+                });
+            }
+            if (Objects.equals(unsures[0], unsures[1])) {
+                pairedJoin(ruleNumber, rule, plan, step + 1, nextBefore, nextAfter, alive[0], alive[1], unsures[0],
+                        delta);
+                return;
+            }
+            pairedJoin(ruleNumber, rule, plan, step + 1, nextBefore, nextAfter, alive[0], false, unsures[0], delta);
+            pairedJoin(ruleNumber, rule, plan, step + 1, nextBefore, nextAfter, false, alive[1], unsures[1], delta);
+            return;
+        }
+        // An enumeration from terms that differ: the two worlds go on apart.
+        Set<Match> gone = new LinkedHashSet<>();
+        Set<Match> come = new LinkedHashSet<>();
+        if (was) {
+            join(ruleNumber, rule, plan, step, before.clone(), unsure, gone);
+        }
+        if (is) {
+            join(ruleNumber, rule, plan, step, after.clone(), unsure, come);
+        }
+        gone.forEach(match -> conclusions(match).forEach(f -> delta.merge(f, -1, Integer::sum)));
+        come.forEach(match -> conclusions(match).forEach(f -> delta.merge(f, 1, Integer::sum)));
+    }
+
+    /** {@code into} with every variable {@code bound} binds and {@code into} does not. */
+    private static Object[] mergeBound(Object[] into, Object[] bound) {
+        Object[] merged = into.clone();
+        for (int i = 0; i < merged.length; i++) {
+            if (merged[i] == null) {
+                merged[i] = bound[i];
+            }
+        }
+        return merged;
     }
 
     private Set<Fact> netChanges() {
@@ -237,27 +433,32 @@ final class RuleEngine {
 
     private void value(OWLDataProperty property, OWLNamedIndividual subject, DataValue value, boolean appears) {
         for (OWLDataProperty image : program.imagesOf(property)) {
-            Map<OWLNamedIndividual, Map<DataValue, Integer>> bySubject = values.get(image);
-            Map<DataValue, Integer> held = bySubject.computeIfAbsent(subject, k -> new LinkedHashMap<>());
-            int count = held.getOrDefault(value, 0);
-            Fact fact = new Fact(Kind.VALUE, image, subject, value);
-            if (appears) {
-                if (count == 0) {
-                    // A value asserted twice (two literals of one value) is kept with the first literal.
-                    held.put(value, 1);
-                    appeared(fact);
-                } else {
-                    held.put(value, count + 1);
-                }
-            } else if (count == 1) {
-                went(fact);
-                held.remove(value);
-                if (held.isEmpty()) {
-                    bySubject.remove(subject);
-                }
-            } else if (count > 1) {
-                held.put(value, count - 1);
+            valueOf(image, subject, value, appears);
+        }
+    }
+
+    /** A value of a kept property that appeared or went. */
+    private void valueOf(OWLDataProperty image, OWLNamedIndividual subject, DataValue value, boolean appears) {
+        Map<OWLNamedIndividual, Map<DataValue, Integer>> bySubject = values.get(image);
+        Map<DataValue, Integer> held = bySubject.computeIfAbsent(subject, k -> new LinkedHashMap<>());
+        int count = held.getOrDefault(value, 0);
+        Fact fact = new Fact(Kind.VALUE, image, subject, value);
+        if (appears) {
+            if (count == 0) {
+                // A value asserted twice (two literals of one value) is kept with the first literal.
+                held.put(value, 1);
+                appeared(fact);
+            } else {
+                held.put(value, count + 1);
             }
+        } else if (count == 1) {
+            went(fact);
+            held.remove(value);
+            if (held.isEmpty()) {
+                bySubject.remove(subject);
+            }
+        } else if (count > 1) {
+            held.put(value, count - 1);
         }
     }
 
@@ -431,25 +632,36 @@ final class RuleEngine {
             found.add(new Match(ruleNumber, Arrays.asList(binding.clone())));
             return;
         }
-        Atom atom = rule.body().get(plan[step]);
+        joinOne(rule, plan[step], binding, unsure, (bound, stillUnsure) -> join(ruleNumber, rule, plan, step + 1, bound,
+                stillUnsure, found));
+    }
+
+    /** What continues a join once an atom matched: the binding (reset after the call) and an undecided pair. */
+    private interface Next {
+        void accept(Object[] binding, String unsure);
+    }
+
+    /** Matches one atom of a rule's body on the binding, calling {@code next} once per way it matches. */
+    private void joinOne(Rule rule, int index, Object[] binding, String unsure, Next next) {
+        Atom atom = rule.body().get(index);
         switch (atom.kind()) {
             case CLASS -> {
                 Object value = resolve(atom.term(0), binding);
                 if (value != null) {
                     if (value instanceof OWLNamedIndividual individual
                             && typesOf.getOrDefault(individual, Set.of()).contains((OWLClass) atom.predicate())) {
-                        join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                        next.accept(binding, unsure);
                     }
                     return;
                 }
                 for (OWLNamedIndividual individual : List.copyOf(typed.get((OWLClass) atom.predicate()))) {
                     binding[atom.term(0).variable()] = individual;
-                    join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                    next.accept(binding, unsure);
                 }
                 binding[atom.term(0).variable()] = null;
             }
-            case EDGE -> joinEdge(ruleNumber, rule, plan, step, binding, unsure, found, atom);
-            case VALUE -> joinValue(ruleNumber, rule, plan, step, binding, unsure, found, atom);
+            case EDGE -> joinEdge(binding, unsure, next, atom);
+            case VALUE -> joinValue(binding, unsure, next, atom);
             case BUILTIN -> {
                 IRI builtin = (IRI) atom.predicate();
                 Term[] terms = atom.terms();
@@ -468,19 +680,19 @@ final class RuleEngine {
                     Object bound = resolve(terms[0], binding);
                     if (bound == null) {
                         binding[terms[0].variable()] = result;
-                        join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                        next.accept(binding, unsure);
                         binding[terms[0].variable()] = null;
                     } else if (result.equals(bound)) {
-                        join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                        next.accept(binding, unsure);
                     }
                 } else if (resolve(terms[0], binding) instanceof DataValue left
                         && resolve(terms[1], binding) instanceof DataValue right && Builtins.test(builtin, left, right)) {
-                    join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                    next.accept(binding, unsure);
                 }
             }
             case SAME -> {
                 if (resolve(atom.term(0), binding).equals(resolve(atom.term(1), binding))) {
-                    join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                    next.accept(binding, unsure);
                 }
             }
             case DIFFERENT -> {
@@ -491,14 +703,12 @@ final class RuleEngine {
                 }
                 boolean asserted = differentSets.getOrDefault(first, List.of()).stream()
                         .anyMatch(set -> set.contains(second));
-                join(ruleNumber, rule, plan, step + 1, binding, asserted || unsure != null ? unsure
-                        : first + " and " + second, found);
+                next.accept(binding, asserted || unsure != null ? unsure : first + " and " + second);
             }
         }
     }
 
-    private void joinEdge(int ruleNumber, Rule rule, int[] plan, int step, Object[] binding, String unsure,
-                          Set<Match> found, Atom atom) {
+    private void joinEdge(Object[] binding, String unsure, Next next, Atom atom) {
         Relation relation = edges.get((OWLObjectProperty) atom.predicate());
         Object subject = resolve(atom.term(0), binding);
         Object object = resolve(atom.term(1), binding);
@@ -506,13 +716,13 @@ final class RuleEngine {
             Map<OWLNamedIndividual, Integer> targets = relation.out.getOrDefault(subject, Map.of());
             if (object != null) {
                 if (targets.containsKey(object)) {
-                    join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                    next.accept(binding, unsure);
                 }
                 return;
             }
             for (OWLNamedIndividual target : List.copyOf(targets.keySet())) {
                 binding[atom.term(1).variable()] = target;
-                join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                next.accept(binding, unsure);
             }
             binding[atom.term(1).variable()] = null;
             return;
@@ -520,7 +730,7 @@ final class RuleEngine {
         if (object != null) {
             for (OWLNamedIndividual source : List.copyOf(relation.in.getOrDefault(object, Set.of()))) {
                 binding[atom.term(0).variable()] = source;
-                join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                next.accept(binding, unsure);
             }
             binding[atom.term(0).variable()] = null;
             return;
@@ -534,15 +744,14 @@ final class RuleEngine {
                     continue;
                 }
                 binding[atom.term(1).variable()] = target;
-                join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                next.accept(binding, unsure);
             }
         }
         binding[atom.term(0).variable()] = null;
         binding[atom.term(1).variable()] = null;
     }
 
-    private void joinValue(int ruleNumber, Rule rule, int[] plan, int step, Object[] binding, String unsure,
-                           Set<Match> found, Atom atom) {
+    private void joinValue(Object[] binding, String unsure, Next next, Atom atom) {
         Map<OWLNamedIndividual, Map<DataValue, Integer>> bySubject = values.get((OWLDataProperty) atom.predicate());
         Object subject = resolve(atom.term(0), binding);
         Object value = resolve(atom.term(1), binding);
@@ -550,13 +759,13 @@ final class RuleEngine {
             Map<DataValue, Integer> held = bySubject.getOrDefault(subject, Map.of());
             if (value != null) {
                 if (held.containsKey(value)) {
-                    join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                    next.accept(binding, unsure);
                 }
                 return;
             }
             for (DataValue each : List.copyOf(held.keySet())) {
                 binding[atom.term(1).variable()] = each;
-                join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                next.accept(binding, unsure);
             }
             binding[atom.term(1).variable()] = null;
             return;
@@ -570,7 +779,7 @@ final class RuleEngine {
                 if (value == null) {
                     binding[atom.term(1).variable()] = each;
                 }
-                join(ruleNumber, rule, plan, step + 1, binding, unsure, found);
+                next.accept(binding, unsure);
             }
         }
         binding[atom.term(0).variable()] = null;

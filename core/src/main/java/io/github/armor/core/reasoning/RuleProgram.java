@@ -216,6 +216,16 @@ final class RuleProgram {
         return valueImages.computeIfAbsent(property, p -> hierarchy.valueImages(p, valueProperties));
     }
 
+    /** Whether no rule body reads the kept data property twice (a replaced value can then be joined in one step). */
+    boolean readOnce(OWLDataProperty property) {
+        for (Rule rule : rules) {
+            if (rule.body.stream().filter(atom -> atom.kind == Kind.VALUE && atom.predicate.equals(property)).count() > 1) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /** Whether a conclusion on this predicate bears on what the modules reason (the schema mentions it). */
     boolean seenBySchema(Object predicate) {
         return predicate instanceof OWLClass || schemaSignature.contains((OWLEntity) predicate);
