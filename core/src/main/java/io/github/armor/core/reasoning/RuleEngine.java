@@ -47,8 +47,14 @@ import org.semanticweb.owlapi.model.parameters.Imports;
  * counts without making conclusions that stay flicker.
  *
  * <p>The work of a change is the matches it makes or ends: a moved robot joins its new place's
- * neighbours; a new clock value joins every room's last visit, a comparison each (the rule says
- * every room may have become urgent). What the modules reason on again is only what changed.
+ * neighbours; a clock value replaced by the next is joined from both side by side ({@link
+ * #replaced}): each room's last visit is read once and compared twice, and only the rooms whose
+ * urgency changed move a count. What the modules reason on again is only what changed.
+ *
+ * <p>Why not Jena's forward (RETE) engine, which has built-ins: its retraction is not exact.
+ * With Jena 3.10's FORWARD_RETE, the rule (?a p ?b) -> (?b q x) and the facts (a1 p b), (a2 p b),
+ * removing (a1 p b) removes (b q x), which (a2 p b) still gives; the way round is to evaluate
+ * everything again after every removal, work proportional to the whole ABox.
  */
 final class RuleEngine {
     /** A fact rules read or conclude: a type (object null), an edge (an individual) or a value (a data value). */
