@@ -280,7 +280,9 @@ def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, scale: str) -> Dict[s
     scale shares one node, to stay short in make test.
     """
     results: Dict[str, dict] = {}
-    shared = BenchNode(scratch, snapshot) if scale == 'smoke' else None
+    # A LOAD may take the run's budget (the default reasoner limit, 30 s, stops the first reasoning at 10,000).
+    limit = {'reasoner_timeout_ms': str(BUDGET_S[scale] * 1000)}
+    shared = BenchNode(scratch, snapshot, parameters=limit) if scale == 'smoke' else None
     try:
         for label, make in SHAPES.items():
             results[label] = {}
@@ -295,7 +297,7 @@ def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, scale: str) -> Dict[s
                             'note': f'not run: past {WHOLE_COURSE_UP_TO:,} locations the whole-ontology'
                                     ' Openllet does not finish a cycle within the budget'}
                         continue
-                    node = shared or BenchNode(scratch, snapshot)
+                    node = shared or BenchNode(scratch, snapshot, parameters=limit)
                     try:
                         results[label][size][name] = _run(
                             node, path, make(size), reasoner, CYCLES[scale], BUDGET_S[scale],

@@ -714,23 +714,27 @@ final class RuleEngine {
         }
     }
 
+    /** Matches the object of an atom whose subject is bound: {@code held} are the subject's objects. */
+    private static void objectsOf(Set<?> held, Atom atom, Object object, Object[] binding, String unsure, Next next) {
+        if (object != null) {
+            if (held.contains(object)) {
+                next.accept(binding, unsure);
+            }
+            return;
+        }
+        for (Object each : List.copyOf(held)) {
+            binding[atom.term(1).variable()] = each;
+            next.accept(binding, unsure);
+        }
+        binding[atom.term(1).variable()] = null;
+    }
+
     private void joinEdge(Object[] binding, String unsure, Next next, Atom atom) {
         Relation relation = edges.get((OWLObjectProperty) atom.predicate());
         Object subject = resolve(atom.term(0), binding);
         Object object = resolve(atom.term(1), binding);
         if (subject != null) {
-            Map<OWLNamedIndividual, Integer> targets = relation.out.getOrDefault(subject, Map.of());
-            if (object != null) {
-                if (targets.containsKey(object)) {
-                    next.accept(binding, unsure);
-                }
-                return;
-            }
-            for (OWLNamedIndividual target : List.copyOf(targets.keySet())) {
-                binding[atom.term(1).variable()] = target;
-                next.accept(binding, unsure);
-            }
-            binding[atom.term(1).variable()] = null;
+            objectsOf(relation.out.getOrDefault(subject, Map.of()).keySet(), atom, object, binding, unsure, next);
             return;
         }
         if (object != null) {
@@ -762,18 +766,7 @@ final class RuleEngine {
         Object subject = resolve(atom.term(0), binding);
         Object value = resolve(atom.term(1), binding);
         if (subject != null) {
-            Map<DataValue, Integer> held = bySubject.getOrDefault(subject, Map.of());
-            if (value != null) {
-                if (held.containsKey(value)) {
-                    next.accept(binding, unsure);
-                }
-                return;
-            }
-            for (DataValue each : List.copyOf(held.keySet())) {
-                binding[atom.term(1).variable()] = each;
-                next.accept(binding, unsure);
-            }
-            binding[atom.term(1).variable()] = null;
+            objectsOf(bySubject.getOrDefault(subject, Map.of()).keySet(), atom, value, binding, unsure, next);
             return;
         }
         for (Map.Entry<OWLNamedIndividual, Map<DataValue, Integer>> entry : List.copyOf(bySubject.entrySet())) {
