@@ -3,6 +3,7 @@ package io.github.armor.core.reasoning;
 
 import java.math.BigDecimal;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Objects;
 import java.util.Set;
 import org.semanticweb.owlapi.model.IRI;
@@ -118,9 +119,12 @@ final class Builtins {
         return name != null && ARITHMETIC.containsKey(name);
     }
 
+    // Built-ins are tested once per match: their names are read once.
+    private static final Map<IRI, Optional<String>> NAMES = new java.util.concurrent.ConcurrentHashMap<>();
+
     private static String name(IRI builtin) {
-        String iri = builtin.toString();
-        return iri.startsWith(SWRLB) ? iri.substring(SWRLB.length()) : null;
+        return NAMES.computeIfAbsent(builtin, iri -> iri.toString().startsWith(SWRLB)
+                ? Optional.of(iri.toString().substring(SWRLB.length())) : Optional.empty()).orElse(null);
     }
 
     /** A comparison's truth; both arguments are bound. */

@@ -647,7 +647,11 @@ final class RuleEngine {
         void accept(Object[] binding, String unsure);
     }
 
-    /** Matches one atom of a rule's body on the binding, calling {@code next} once per way it matches. */
+    /**
+     * Matches one atom of a rule's body on the binding, calling {@code next} once per way it
+     * matches. A join only reads the store (matches are collected, then counted), so it walks the
+     * store's own collections.
+     */
     private void joinOne(Rule rule, int index, Object[] binding, String unsure, Next next) {
         Atom atom = rule.body().get(index);
         switch (atom.kind()) {
@@ -660,7 +664,7 @@ final class RuleEngine {
                     }
                     return;
                 }
-                for (OWLNamedIndividual individual : List.copyOf(typed.get((OWLClass) atom.predicate()))) {
+                for (OWLNamedIndividual individual : typed.get((OWLClass) atom.predicate())) {
                     binding[atom.term(0).variable()] = individual;
                     next.accept(binding, unsure);
                 }
@@ -722,7 +726,7 @@ final class RuleEngine {
             }
             return;
         }
-        for (Object each : List.copyOf(held)) {
+        for (Object each : held) {
             binding[atom.term(1).variable()] = each;
             next.accept(binding, unsure);
         }
@@ -738,7 +742,7 @@ final class RuleEngine {
             return;
         }
         if (object != null) {
-            for (OWLNamedIndividual source : List.copyOf(relation.in.getOrDefault(object, Set.of()))) {
+            for (OWLNamedIndividual source : relation.in.getOrDefault(object, Set.of())) {
                 binding[atom.term(0).variable()] = source;
                 next.accept(binding, unsure);
             }
@@ -747,9 +751,9 @@ final class RuleEngine {
         }
         boolean loop = atom.term(0).variable() == atom.term(1).variable();
         for (Map.Entry<OWLNamedIndividual, Map<OWLNamedIndividual, Integer>> entry
-                : List.copyOf(relation.out.entrySet())) {
+                : relation.out.entrySet()) {
             binding[atom.term(0).variable()] = entry.getKey();
-            for (OWLNamedIndividual target : List.copyOf(entry.getValue().keySet())) {
+            for (OWLNamedIndividual target : entry.getValue().keySet()) {
                 if (loop && !target.equals(entry.getKey())) {
                     continue;
                 }
@@ -769,9 +773,9 @@ final class RuleEngine {
             objectsOf(bySubject.getOrDefault(subject, Map.of()).keySet(), atom, value, binding, unsure, next);
             return;
         }
-        for (Map.Entry<OWLNamedIndividual, Map<DataValue, Integer>> entry : List.copyOf(bySubject.entrySet())) {
+        for (Map.Entry<OWLNamedIndividual, Map<DataValue, Integer>> entry : bySubject.entrySet()) {
             binding[atom.term(0).variable()] = entry.getKey();
-            for (DataValue each : List.copyOf(entry.getValue().keySet())) {
+            for (DataValue each : entry.getValue().keySet()) {
                 if (value != null && !value.equals(each)) {
                     continue;
                 }
