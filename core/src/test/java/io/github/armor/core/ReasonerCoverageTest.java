@@ -94,7 +94,8 @@ class ReasonerCoverageTest {
     void jfactSaysItDoesNotUseSwrlRules() throws IOException {
         CoreFixture f = fixture();
         assertEquals("profile: OWL 2 DL; JFACT does not use 1 axiom: 1 SWRL rule; answers may be incomplete;"
-                + " reasoning on the whole ontology: SWRL rules", load(f, "JFACT").errorDescription());
+                + " reasoning on the whole ontology: SWRL rules (JFact does not evaluate them; PELLET and HERMIT references do)",
+                load(f, "JFACT").errorDescription());
         Response visited = f.ok("c", "QUERY IND CLASS", "Visited");
         assertEquals(List.of(), visited.queriedObjects());
         assertEquals("may be incomplete: JFACT does not use 1 axiom: 1 SWRL rule", visited.errorDescription());
@@ -105,7 +106,10 @@ class ReasonerCoverageTest {
     @ValueSource(strings = {"HERMIT", "PELLET"})
     void reasonersThatApplyRulesSayOnlyHowTheyReason(String reasoner) throws IOException {
         CoreFixture f = fixture();
-        assertEquals("reasoning on the whole ontology: SWRL rules", load(f, reasoner).errorDescription());
+        // Its SafeRobot (a universal restriction on the left of an equivalence) is not Horn: rules need the whole.
+        String loaded = load(f, reasoner).errorDescription();
+        assertTrue(loaded.startsWith("reasoning on the whole ontology: SWRL rules with an axiom that lets a model"
+                + " choose (not Horn): "), loaded);
         Response visited = f.ok("c", "QUERY IND CLASS", "Visited");
         assertEquals(names("kitchen"), visited.queriedObjects());
         assertEquals("", visited.errorDescription());

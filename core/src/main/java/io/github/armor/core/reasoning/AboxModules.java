@@ -199,6 +199,11 @@ final class AboxModules {
         return grow(seed, new ArrayList<>());
     }
 
+    /** The module the individual is in, or null when it is not in the ontology. */
+    Module moduleOf(OWLIndividual individual) {
+        return moduleOf.get(individual);
+    }
+
     /** How many modules there are. */
     int count() {
         return count;

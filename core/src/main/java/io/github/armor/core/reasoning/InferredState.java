@@ -104,6 +104,21 @@ public final class InferredState {
         return found;
     }
 
+    /** The named individuals the state knows. */
+    List<OWLNamedIndividual> individualsList() {
+        List<OWLNamedIndividual> found = new ArrayList<>(individuals);
+        for (Slot[] chunk : chunks) {
+            if (chunk != null) {
+                for (Slot slot : chunk) {
+                    if (slot != null) {
+                        found.add(slot.individual());
+                    }
+                }
+            }
+        }
+        return found;
+    }
+
     /** The classes of an individual, for a reader that has no reasoner (empty: unknown individual). */
     public Optional<Set<OWLClass>> classesOf(OWLNamedIndividual individual, boolean direct) {
         return types(individual).map(profile -> {

@@ -5,10 +5,13 @@ import io.github.armor.core.reasoning.AboxModules.Module;
 import io.github.armor.core.reasoning.AboxModules.Repartition;
 import io.github.armor.core.reasoning.ModuleRealiser.Realised;
 import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
@@ -27,6 +30,7 @@ import org.semanticweb.owlapi.model.OWLObjectPropertyExpression;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
 import org.semanticweb.owlapi.model.OWLOntologyChangeListener;
+import org.semanticweb.owlapi.model.SWRLRule;
 import org.semanticweb.owlapi.model.parameters.Imports;
 import org.semanticweb.owlapi.reasoner.BufferingMode;
 import org.semanticweb.owlapi.reasoner.FreshEntityPolicy;
@@ -93,6 +97,12 @@ public final class ModularReasoner implements OWLReasoner {
     private AboxModules modules;
     private ModuleRealiser realiser;
     private boolean schemaConsistent;
+    // With SWRL rules: the engine, the types without its conclusions (what rules read), and the
+    // modules inconsistent once the conclusions are added. Without rules the base state is the state.
+    private RuleEngine rules;
+    private InferredState baseState;
+    private final Set<Module> inconsistentWithConclusions =
+            java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
     private volatile InferredState state;
     private Set<OWLOntology> closure;
 
@@ -195,10 +205,30 @@ public final class ModularReasoner implements OWLReasoner {
             reasonOnWhole(found.obstacle().get());
             return;
         }
+        RuleEngine engine = null;
+        List<SWRLRule> swrl = ontology.axioms(AxiomType.SWRL_RULE, Imports.INCLUDED).toList();
+        if (!swrl.isEmpty()) {
+            if (underlyingName.equalsIgnoreCase("JFACT")) {
+                reasonOnWhole("SWRL rules (JFact does not evaluate them; PELLET and HERMIT references do)");
+                return;
+            }
+            RuleProgram.Compiled compiled = RuleProgram.compile(logicalSchemaAxioms().toList(), swrl,
+                    Stream.concat(ontology.axioms(AxiomType.SAME_INDIVIDUAL, Imports.INCLUDED),
+                            ontology.axioms(AxiomType.CLASS_ASSERTION, Imports.INCLUDED)
+                                    .filter(AboxLinks::shapesLinks)).map(OWLAxiom.class::cast).toList(), found);
+            if (compiled.obstacle() != null) {
+                reasonOnWhole(compiled.obstacle());
+                return;
+            }
+            engine = new RuleEngine(compiled.program(), ontology.getOWLOntologyManager().getOWLDataFactory());
+        }
+        RuleEngine ruleEngine = engine;
         mode = Mode.MODULAR;
         wholeBehind = true;
         guarded(() -> {
             long start = System.nanoTime();
+            rules = ruleEngine;
+            inconsistentWithConclusions.clear();
             links = found;
             realiser = new ModuleRealiser(factory, configuration, schemaAxioms());
             modules = new AboxModules(ontology, links);
@@ -210,7 +240,15 @@ public final class ModularReasoner implements OWLReasoner {
             InferredState.Editor next = InferredState.empty().edit()
                     .classes(ontology.classesInSignature(Imports.INCLUDED).collect(Collectors.toSet()));
             record(all, schemaConsistent ? realiser.realise(all, modules::axiomsOf) : List.of(), next);
-            state = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+            baseState = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+            state = baseState;
+            if (rules != null) {
+                InferredState base = baseState;
+                rules.load(ontology, owlClass -> base.instances(owlClass));
+                if (!withConclusions(base.individualsList(), List.of())) {
+                    return;
+                }
+            }
             lastUpdate = new LastUpdate(true, state.individuals(), state.individuals(), modules.count());
             plan = ReasoningPlan.modules(all.size(), all.stream().mapToInt(m -> m.members.size()).max().orElse(0),
                     all.stream().filter(m -> m.hub).mapToInt(m -> m.members.size()).sum());
@@ -226,6 +264,8 @@ public final class ModularReasoner implements OWLReasoner {
         Set<OWLClass> classes = new HashSet<>();
         boolean schemaChanged = false;
         boolean linksMayChange = false;
+        List<OWLAxiom> added = new ArrayList<>();
+        List<OWLAxiom> removed = new ArrayList<>();
         for (OWLOntologyChange change : changes) {
             if (change.isImportChange()) {
                 schemaChanged = true;
@@ -238,6 +278,11 @@ public final class ModularReasoner implements OWLReasoner {
             if (axiom.isOfType(AxiomType.ABoxAxiomTypes)) {
                 AboxLinks.individualsOf(axiom).forEach(touched::add);
                 linksMayChange |= AboxLinks.shapesLinks(axiom);
+                // With rules: sameness can make the schema unfit for them, and a rule may read difference.
+                schemaChanged |= rules != null && (axiom.isOfType(AxiomType.SAME_INDIVIDUAL)
+                        || AboxLinks.shapesLinks(axiom)
+                        || rules.readsDifference() && axiom.isOfType(AxiomType.DIFFERENT_INDIVIDUALS));
+                (change.isAddAxiom() ? added : removed).add(axiom);
             } else if (axiom instanceof OWLDeclarationAxiom declaration) {
                 if (declaration.getEntity().isOWLNamedIndividual()) {
                     touched.add(declaration.getEntity().asOWLNamedIndividual());
@@ -259,7 +304,7 @@ public final class ModularReasoner implements OWLReasoner {
         if (nominalIndependence != null && !coveredByNominalCheck(repartition.made()) && !nominalsIndependent()) {
             return;
         }
-        InferredState.Editor next = state.edit();
+        InferredState.Editor next = baseState.edit();
         repartition.gone().stream().filter(OWLIndividual::isNamed)
                 .forEach(gone -> next.remove(gone.asOWLNamedIndividual()));
         record(repartition.made(), schemaConsistent
@@ -273,13 +318,112 @@ public final class ModularReasoner implements OWLReasoner {
         if (signatureChanged) {
             next.classes(signature);
         }
-        state = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+        baseState = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+        if (rules == null) {
+            state = baseState;
+        } else if (!withRules(added, removed, repartition)) {
+            return;
+        }
         lastUpdate = new LastUpdate(false, repartition.made().stream().mapToInt(m -> m.members.size()).sum(),
                 state.individuals(), modules.count());
         ReasoningPlan before = plan;
         plan = ReasoningPlan.modules(modules.count(), Math.max(before.largest(), repartition.made().stream()
                 .mapToInt(m -> m.members.size()).max().orElse(0)), repartition.made().stream().filter(m -> m.hub)
                 .mapToInt(m -> m.members.size()).findAny().orElse(before.hub()));
+    }
+
+    /**
+     * The rules after an ABox change: the engine takes the asserted edges and values that came
+     * and went and the new body-class types of the remade modules' members; the modules whose
+     * conclusions changed are reasoned on again with them. False when the ontology went whole.
+     */
+    private boolean withRules(List<OWLAxiom> added, List<OWLAxiom> removed, Repartition repartition) {
+        Map<OWLNamedIndividual, Set<OWLClass>> retyped = new HashMap<>();
+        for (Module module : repartition.made()) {
+            module.namedMembers().forEach(member -> retyped.put(member, bodyClassesOf(member)));
+        }
+        repartition.gone().stream().filter(OWLIndividual::isNamed)
+                .forEach(gone -> retyped.put(gone.asOWLNamedIndividual(), Set.of()));
+        Set<RuleEngine.Fact> changed = rules.update(added, removed, retyped);
+        Set<OWLNamedIndividual> affected = new LinkedHashSet<>(retyped.keySet());
+        for (RuleEngine.Fact fact : changed) {
+            affected.add(fact.subject());
+            if (fact.object() instanceof OWLNamedIndividual object) {
+                affected.add(object);
+            }
+        }
+        return withConclusions(affected, repartition.dropped());
+    }
+
+    private Set<OWLClass> bodyClassesOf(OWLNamedIndividual individual) {
+        Set<OWLClass> classes = new HashSet<>();
+        baseState.types(individual).ifPresent(profile -> {
+            for (OWLClass owlClass : rules.bodyClasses()) {
+                if (profile.has(owlClass, false)) {
+                    classes.add(owlClass);
+                }
+            }
+        });
+        return classes;
+    }
+
+    /**
+     * The state with the rules' conclusions: the modules of the affected individuals take their
+     * types without conclusions, or, when the rules concluded something about a member, are
+     * reasoned on with those conclusions. A conclusion must not change a type a rule reads
+     * ({@link RuleProgram}, why rules read the types without conclusions); if one does, or the
+     * engine met a pair it cannot decide, the whole ontology is reasoned on. False then.
+     */
+    private boolean withConclusions(Collection<OWLNamedIndividual> affected, List<Module> dropped) {
+        if (rules.obstacle() != null) {
+            reasonOnWhole(rules.obstacle());
+            return false;
+        }
+        dropped.forEach(inconsistentWithConclusions::remove);
+        InferredState.Editor next = state.edit().classes(baseState.edit().classes());
+        Set<Module> seen = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
+        List<Module> withConclusions = new ArrayList<>();
+        for (OWLNamedIndividual individual : affected) {
+            Module module = modules.moduleOf(individual);
+            if (module == null) {
+                next.remove(individual);
+                continue;
+            }
+            if (!seen.add(module)) {
+                continue;
+            }
+            inconsistentWithConclusions.remove(module);
+            if (schemaConsistent && module.consistent && module.namedMembers().anyMatch(rules::concludedAbout)) {
+                withConclusions.add(module);
+            } else {
+                module.namedMembers().forEach(member -> next.put(member, baseState.types(member).orElse(null)));
+            }
+        }
+        for (Realised outcome : realiser.realise(withConclusions, module -> {
+            Set<OWLAxiom> axioms = new LinkedHashSet<>(modules.axiomsOf(module));
+            module.namedMembers().forEach(member -> axioms.addAll(rules.conclusionsAbout(member, module.members)));
+            return axioms;
+        })) {
+            if (!outcome.consistent()) {
+                inconsistentWithConclusions.add(outcome.module());
+                outcome.module().namedMembers().forEach(member -> next.put(member, null));
+                continue;
+            }
+            for (Map.Entry<OWLNamedIndividual, TypeProfile> entry : outcome.types().entrySet()) {
+                Set<OWLClass> before = bodyClassesOf(entry.getKey());
+                for (OWLClass owlClass : rules.bodyClasses()) {
+                    if (entry.getValue().has(owlClass, false) && !before.contains(owlClass)) {
+                        reasonOnWhole("a SWRL rule's conclusion makes " + entry.getKey().getIRI().getShortForm()
+                                + " a " + owlClass.getIRI().getShortForm() + ", which a rule reads (rules that"
+                                + " chain through classes)");
+                        return false;
+                    }
+                }
+                next.put(entry.getKey(), entry.getValue());
+            }
+        }
+        state = next.consistent(baseState.consistent() && inconsistentWithConclusions.isEmpty()).done();
+        return true;
     }
 
     /**
@@ -352,6 +496,8 @@ public final class ModularReasoner implements OWLReasoner {
         plan = ReasoningPlan.whole(because);
         nominalIndependence = null;
         links = null;
+        rules = null;
+        baseState = null;
         modules = null;
         realiser = null;
         state = null;
@@ -371,10 +517,11 @@ public final class ModularReasoner implements OWLReasoner {
                         .filter(AboxLinks::shapesLinks));
     }
 
-    /** The logical axioms that are not assertions, through the index by kind (not every assertion). */
+    /** The logical axioms that are neither assertions nor rules, through the index by kind (not every assertion). */
     private Stream<OWLAxiom> logicalSchemaAxioms() {
         return AxiomType.AXIOM_TYPES.stream()
-                .filter(type -> type.isLogical() && !AxiomType.ABoxAxiomTypes.contains(type))
+                .filter(type -> type.isLogical() && !AxiomType.ABoxAxiomTypes.contains(type)
+                        && type != AxiomType.SWRL_RULE)
                 .flatMap(type -> ontology.axioms(type, Imports.INCLUDED).map(OWLAxiom.class::cast));
     }
 
@@ -704,6 +851,14 @@ public final class ModularReasoner implements OWLReasoner {
 
     @Override
     public NodeSet<OWLNamedIndividual> getObjectPropertyValues(OWLNamedIndividual ind, OWLObjectPropertyExpression pe) {
+        // The edges of a property the rules read or conclude are kept by the engine (RuleProgram: they are exactly those).
+        InferredState now = consistentState();
+        Set<OWLNamedIndividual> kept = now != null && rules != null ? rules.objectValues(ind, pe) : null;
+        if (kept != null) {
+            OWLNamedIndividualNodeSet values = new OWLNamedIndividualNodeSet();
+            kept.forEach(value -> values.addNode(new OWLNamedIndividualNode(value)));
+            return values;
+        }
         return whole().getObjectPropertyValues(ind, pe);
     }
 
