@@ -8,7 +8,7 @@
 (tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set
 with the environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
 (query_latency.py, batch_throughput.py, reasoning_cycle.py, robot_speed.py,
-core_profile.py, lubm.py, default_clients.py).
+core_profile.py, lubm.py, default_clients.py, real_shapes.py).
 """
 
 import argparse
@@ -28,6 +28,7 @@ import core_profile
 import default_clients
 import lubm
 import query_latency
+import real_shapes
 import reasoning_cycle
 import report
 import robot_speed
@@ -128,11 +129,16 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
     stage('8. plain rclpy clients with the default QoS (issue 20)')
     results['default_clients'] = default_clients.measure(
         scratch, snapshot, **default_clients.SUITE_SIZES[scale_name])
+    stage('9. the ontologies robots really use (issue 28)')
+    results['real_shapes'] = real_shapes.measure(scratch, snapshot, scale_name)
     results['duration_s'] = time.monotonic() - started
     (scratch / 'results.json').write_text(json.dumps(results, indent=2, default=str))
     report_path.write_text(report.render(results) + '\n\n'
                            + '## 8. Plain rclpy clients with the default QoS (issue 20)\n\n'
-                           + default_clients.render(results['default_clients']) + '\n')
+                           + default_clients.render(results['default_clients']) + '\n\n'
+                           + '## 9. The ontologies robots really use (issue 28)\n\n'
+                           + real_shapes.__doc__.split('\n\n', 2)[2].strip() + '\n\n'
+                           + real_shapes.render(results['real_shapes']) + '\n')
     stage(f'report written to {report_path} (raw figures: {scratch / "results.json"})')
     return results
 

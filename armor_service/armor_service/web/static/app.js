@@ -196,6 +196,7 @@ function renderReferenceList() {
       : el('span', {className: 'badge bad', text: 'INCONSISTENT'});
     const rows = [
       ['reasoner', r.reasoner],
+      ['reasoning', r.reasoning],
       ['classes', r.busy ? '…' : r.classes],
       ['individuals', r.busy ? '…' : r.individuals],
       ['axioms', r.busy ? '…' : r.axioms],
@@ -219,6 +220,7 @@ function renderSummary() {
     `${summary.reasoner} reasoner`,
     `manipulation ${mode(summary.buffered_manipulation)}`,
     `reasoner ${mode(summary.buffered_reasoner)}`,
+    `reasoning ${summary.reasoning}`,
     summary.mounted_by ? `mounted by ${summary.mounted_by}${leaseText(summary)}` : 'not mounted',
   ];
   if (!summary.busy) {

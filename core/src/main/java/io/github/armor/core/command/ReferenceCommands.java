@@ -12,6 +12,7 @@ import io.github.armor.core.reference.ReasonerRegistry;
 import io.github.armor.core.reference.Reference;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Function;
 
 /** Contract 5.1: creating, saving and dropping references, mounting, and the utilities. */
@@ -168,9 +169,16 @@ public final class ReferenceCommands implements CommandGroup {
         if (mount) {
             takeMount(reference, client);
         }
-        String coverage = reference.coverage().loadReport();
-        if (!coverage.isEmpty()) {
-            warnings.append(warnings.isEmpty() ? "" : "; ").append(coverage);
+        String statement = reference.loadStatement().text();
+        if (!statement.isEmpty()) {
+            warnings.append(warnings.isEmpty() ? "" : "; ").append(statement);
+        }
+        Optional<ArmorException> timedOut = reference.takeLoadTimeout();
+        if (timedOut.isPresent()) {
+            // Loaded, but not reasoned on: 211, and the reference is there (and journaled) for the next directive.
+            return Response.failure(timedOut.get(), true).withDescription("reference '" + name + "' is loaded but"
+                    + " its first reasoning was stopped: " + timedOut.get().getMessage()
+                    + (warnings.isEmpty() ? "" : "; " + warnings));
         }
         return Response.ok(reference.isConsistent(), List.of()).withDescription(warnings.toString());
     }

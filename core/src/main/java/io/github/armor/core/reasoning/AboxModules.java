@@ -6,13 +6,17 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Deque;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.WeakHashMap;
 import java.util.stream.Stream;
 import org.semanticweb.owlapi.model.OWLAxiom;
 import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLDifferentIndividualsAxiom;
+import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLIndividual;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLObjectPropertyAssertionAxiom;
@@ -30,6 +34,8 @@ final class AboxModules {
     static final class Module {
         final Set<OWLIndividual> members;
         boolean consistent = true;
+        // Holds the individuals the schema names: reasoned on with them, never compared by shape.
+        boolean hub;
 
         Module(Set<OWLIndividual> members) {
             this.members = members;
@@ -51,7 +57,10 @@ final class AboxModules {
     private final AboxLinks links;
     private final OWLDataFactory factory;
     private final Map<OWLIndividual, Module> moduleOf = new HashMap<>();
+    // The members of each DifferentIndividuals axiom, as a set (students list thousands in one).
+    private final Map<OWLDifferentIndividualsAxiom, Set<OWLIndividual>> differentMembers = new WeakHashMap<>();
     private final Set<Module> inconsistent = new LinkedHashSet<>();
+    private int count;
     // Without imports the ontology's own index answers (the closure's costs a stream per lookup);
     // an import change is a schema change, after which the modules are made anew.
     private final Imports imports;
@@ -66,6 +75,7 @@ final class AboxModules {
     /** Every individual of the ontology (imports included), in modules. */
     List<Module> partitionAll() {
         moduleOf.clear();
+        count = 0;
         inconsistent.clear();
         List<Module> made = new ArrayList<>();
         Stream.concat(ontology.individualsInSignature(Imports.INCLUDED),
@@ -118,10 +128,13 @@ final class AboxModules {
 
     /**
      * The ABox part of a module: every logical assertion about its individuals, with each edge to
-     * an individual outside it replaced by what the edge says about this end (a : ∃P.⊤, b : ∃P⁻.⊤).
+     * an individual outside it replaced by what the edge says about this end (a : ∃P.⊤, b : ∃P⁻.⊤),
+     * and each DifferentIndividuals axiom cut down to the module's members (individuals of
+     * different modules are different elements of the whole ontology's model anyway).
      */
     Set<OWLAxiom> axiomsOf(Module module) {
         Set<OWLAxiom> axioms = new LinkedHashSet<>();
+        Set<OWLDifferentIndividualsAxiom> differences = new HashSet<>();
         for (OWLIndividual member : module.members) {
             if (member.isNamed()) {
                 axioms.add(factory.getOWLDeclarationAxiom(member.asOWLNamedIndividual()));
@@ -129,12 +142,35 @@ final class AboxModules {
             referencing(member).filter(OWLAxiom::isLogicalAxiom).forEach(axiom -> {
                 if (axiom instanceof OWLObjectPropertyAssertionAxiom edge && !links.links(edge.getProperty())) {
                     axioms.add(splitEnd(edge, member, module));
+                } else if (axiom instanceof OWLDifferentIndividualsAxiom different) {
+                    if (differences.add(different)) {
+                        Set<OWLIndividual> all = differentMembers.computeIfAbsent(different,
+                                d -> new HashSet<>(d.getIndividualsAsList()));
+                        List<OWLIndividual> inside = module.members.stream().filter(all::contains).toList();
+                        if (inside.size() > 1) {
+                            axioms.add(inside.size() == all.size() ? different
+                                    : factory.getOWLDifferentIndividualsAxiom(inside));
+                        }
+                    }
                 } else {
                     axioms.add(axiom);
                 }
             });
         }
         return axioms;
+    }
+
+    /** The classes, properties and datatypes of the assertions of every module but the hub. */
+    Set<OWLEntity> signatureOutsideHub() {
+        Set<OWLEntity> signature = new HashSet<>();
+        Set<Module> done = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
+        for (Module module : moduleOf.values()) {
+            if (!module.hub && done.add(module)) {
+                axiomsOf(module).forEach(axiom -> axiom.signature()
+                        .filter(entity -> !entity.isOWLNamedIndividual()).forEach(signature::add));
+            }
+        }
+        return signature;
     }
 
     private OWLAxiom splitEnd(OWLObjectPropertyAssertionAxiom edge, OWLIndividual member, Module module) {
@@ -163,9 +199,15 @@ final class AboxModules {
         return grow(seed, new ArrayList<>());
     }
 
+    /** How many modules there are. */
+    int count() {
+        return count;
+    }
+
     /** The module of {@code seed}: everything reachable over tying assertions (breadth first). */
     private Module grow(OWLIndividual seed, List<Module> dropped) {
         Module module = new Module(new LinkedHashSet<>());
+        count++;
         Deque<OWLIndividual> frontier = new ArrayDeque<>();
         frontier.add(seed);
         module.members.add(seed);
@@ -177,19 +219,24 @@ final class AboxModules {
                 forget(earlier);
                 moduleOf.put(individual, module);
             }
-            referencing(individual).filter(links::ties)
-                    .flatMap(AboxLinks::individualsOf)
-                    .forEach(neighbour -> {
-                        if (module.members.add(neighbour)) {
-                            frontier.add(neighbour);
-                        }
-                    });
+            Stream<OWLIndividual> neighbours = referencing(individual).filter(links::ties)
+                    .flatMap(AboxLinks::individualsOf);
+            if (individual.isNamed() && links.nominals().contains(individual.asOWLNamedIndividual())) {
+                module.hub = true;
+                neighbours = Stream.concat(neighbours, links.nominals().stream());
+            }
+            neighbours.forEach(neighbour -> {
+                if (module.members.add(neighbour)) {
+                    frontier.add(neighbour);
+                }
+            });
         }
         return module;
     }
 
     /** Forgets a module's assignments (its members are about to be assigned again). */
     private void forget(Module module) {
+        count--;
         inconsistent.remove(module);
         for (OWLIndividual member : module.members) {
             moduleOf.remove(member, module);

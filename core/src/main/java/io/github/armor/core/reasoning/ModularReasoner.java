@@ -86,6 +86,10 @@ public final class ModularReasoner implements OWLReasoner {
     private Mode mode = Mode.NOT_REASONED;
     private String wholeBecause = "";
     private AboxLinks links;
+    // Null without nominals in the schema; else what the ABox's signature reaches of the schema.
+    private NominalIndependence nominalIndependence;
+    private volatile ReasoningPlan plan = ReasoningPlan.NOT_YET;
+    private LastUpdate lastUpdate;
     private AboxModules modules;
     private ModuleRealiser realiser;
     private boolean schemaConsistent;
@@ -119,6 +123,22 @@ public final class ModularReasoner implements OWLReasoner {
         return mode != Mode.WHOLE;
     }
 
+    /**
+     * What the last flush reasoned on (for tests): everything, or the remade modules' individuals,
+     * out of how many, with how many modules after it.
+     */
+    record LastUpdate(boolean everything, int remade, int individuals, int modules) {}
+
+    LastUpdate lastUpdate() {
+        return lastUpdate;
+    }
+
+    /** The properties whose assertions tie modules (for tests); empty when not modular. */
+    Set<org.semanticweb.owlapi.model.OWLObjectProperty> linkingProperties() {
+        AboxLinks now = links;
+        return now == null ? Set.of() : now.linking();
+    }
+
     /** How many modules took an earlier module's result since the last schema change (for tests). */
     long reusedShapes() {
         ModuleRealiser current = realiser;
@@ -128,6 +148,11 @@ public final class ModularReasoner implements OWLReasoner {
     /** Why the ontology is reasoned on as a whole, or empty when it is reasoned on in modules. */
     public String wholeBecause() {
         return wholeBecause;
+    }
+
+    /** How the ontology is reasoned on now (modules or whole, and why); safe to read from any thread. */
+    public ReasoningPlan plan() {
+        return plan;
     }
 
     /**
@@ -178,11 +203,17 @@ public final class ModularReasoner implements OWLReasoner {
             realiser = new ModuleRealiser(factory, configuration, schemaAxioms());
             modules = new AboxModules(ontology, links);
             List<Module> all = modules.partitionAll();
+            if (!nominalsIndependent()) {
+                return;
+            }
             schemaConsistent = realiser.schemaConsistent();
             InferredState.Editor next = InferredState.empty().edit()
                     .classes(ontology.classesInSignature(Imports.INCLUDED).collect(Collectors.toSet()));
             record(all, schemaConsistent ? realiser.realise(all, modules::axiomsOf) : List.of(), next);
             state = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+            lastUpdate = new LastUpdate(true, state.individuals(), state.individuals(), modules.count());
+            plan = ReasoningPlan.modules(all.size(), all.stream().mapToInt(m -> m.members.size()).max().orElse(0),
+                    all.stream().filter(m -> m.hub).mapToInt(m -> m.members.size()).sum());
             LOG.debug("{} individuals in {} modules reasoned on with {} ({} took the result of a module alike)"
                     + " in {} ms", state.individuals(), all.size(), underlyingName, realiser.reusedShapes(),
                     (System.nanoTime() - start) / 1_000_000);
@@ -225,6 +256,9 @@ public final class ModularReasoner implements OWLReasoner {
         }
         realiser.prepare();
         Repartition repartition = modules.repartition(touched);
+        if (nominalIndependence != null && !coveredByNominalCheck(repartition.made()) && !nominalsIndependent()) {
+            return;
+        }
         InferredState.Editor next = state.edit();
         repartition.gone().stream().filter(OWLIndividual::isNamed)
                 .forEach(gone -> next.remove(gone.asOWLNamedIndividual()));
@@ -240,6 +274,37 @@ public final class ModularReasoner implements OWLReasoner {
             next.classes(signature);
         }
         state = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+        lastUpdate = new LastUpdate(false, repartition.made().stream().mapToInt(m -> m.members.size()).sum(),
+                state.individuals(), modules.count());
+        ReasoningPlan before = plan;
+        plan = ReasoningPlan.modules(modules.count(), Math.max(before.largest(), repartition.made().stream()
+                .mapToInt(m -> m.members.size()).max().orElse(0)), repartition.made().stream().filter(m -> m.hub)
+                .mapToInt(m -> m.members.size()).findAny().orElse(before.hub()));
+    }
+
+    /**
+     * With nominals in the schema: whether the modules outside the hub cannot reach them
+     * ({@link AboxLinks}, "Nominals"); if they can, the ontology is reasoned on whole.
+     */
+    private boolean nominalsIndependent() {
+        nominalIndependence = null;
+        if (links.nominals().isEmpty()) {
+            return true;
+        }
+        NominalIndependence found = NominalIndependence.check(ontology.getOWLOntologyManager(),
+                logicalSchemaAxioms().toList(), modules.signatureOutsideHub());
+        if (found.dependent().isPresent()) {
+            reasonOnWhole("individuals named in the schema that the ABox can reach (" + found.dependent().get() + ")");
+            return false;
+        }
+        nominalIndependence = found;
+        return true;
+    }
+
+    /** Whether the assertions of the remade modules outside the hub use only symbols the nominal check covered. */
+    private boolean coveredByNominalCheck(List<Module> made) {
+        return made.stream().filter(module -> !module.hub).allMatch(module -> modules.axiomsOf(module).stream()
+                .allMatch(axiom -> axiom.signature().allMatch(nominalIndependence::covers)));
     }
 
     /** The realised types into the next state; without realisation (inconsistent schema) types are unknown. */
@@ -275,9 +340,12 @@ public final class ModularReasoner implements OWLReasoner {
     }
 
     private void reasonOnWhole(String because) {
-        LOG.debug("reasoning on the whole ontology with {}: {}", underlyingName, because);
+        LOG.info("{}: reasoning on the whole ontology with {}: {}", ontology.getOntologyID().getOntologyIRI()
+                .map(Object::toString).orElse("(anonymous ontology)"), underlyingName, because);
         mode = Mode.WHOLE;
         wholeBecause = because;
+        plan = ReasoningPlan.whole(because);
+        nominalIndependence = null;
         links = null;
         modules = null;
         realiser = null;
@@ -336,8 +404,10 @@ public final class ModularReasoner implements OWLReasoner {
             wholeBehind = false;
             wholeMissedRemoval = false;
         } else if (wholeBehind) {
-            // Openllet and JFact keep inferences of removed axioms; HermiT refuses some additions.
-            boolean rebuilt = wholeMissedRemoval;
+            // Openllet and JFact keep inferences of removed axioms; HermiT refuses some additions; with
+            // nominals, JFact and HermiT were seen to keep a class hierarchy that added assertions change.
+            AboxLinks now = links;
+            boolean rebuilt = wholeMissedRemoval || now != null && !now.nominals().isEmpty();
             if (!rebuilt) {
                 try {
                     whole.flush();
@@ -374,7 +444,8 @@ public final class ModularReasoner implements OWLReasoner {
     @Override
     public NodeSet<OWLClass> getTypes(OWLNamedIndividual individual, boolean direct) {
         InferredState now = consistentState();
-        if (now != null && now.knows(individual)) {
+        // Direct types need the whole ontology's class hierarchy: the hub's assertions can add to it.
+        if (now != null && now.knows(individual) && !(direct && !links.nominals().isEmpty())) {
             return now.types(individual).orElseThrow(InconsistentOntologyException::new).nodeSet(direct);
         }
         return whole().getTypes(individual, direct);

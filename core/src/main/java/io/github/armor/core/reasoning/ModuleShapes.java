@@ -57,9 +57,10 @@ final class ModuleShapes {
         this.manager = manager;
     }
 
-    /** The shape of a module with these assertions, or null when it is not compared (size, anonymous individuals). */
+    /** The shape of a module with these assertions, or null when it is not compared (hub, size, anonymous individuals). */
     Shape shapeOf(Module module, Set<OWLAxiom> axioms) {
-        if (module.members.size() > LARGEST || module.members.stream().anyMatch(OWLIndividual::isAnonymous)) {
+        // The hub's individuals are named in the schema: renaming them would change what it says.
+        if (module.hub || module.members.size() > LARGEST || module.members.stream().anyMatch(OWLIndividual::isAnonymous)) {
             return null;
         }
         Map<OWLIndividual, List<Long>> roles = new HashMap<>();

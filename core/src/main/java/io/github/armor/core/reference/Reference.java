@@ -6,6 +6,7 @@ import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.reasoning.ModularReasoner;
 import io.github.armor.core.reasoning.PublishedStates;
+import io.github.armor.core.reasoning.ReasoningPlan;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -70,6 +71,7 @@ public final class Reference {
     private boolean removedSinceSync;
     private boolean consistent = true;
     private String mountedBy = "";
+    private ArmorException loadTimeout;
     private Transaction transaction;
     // When the reasoner was last brought up to date and how long it took (the web view shows them).
     private volatile long lastReasoningEpochMs;
@@ -114,10 +116,24 @@ public final class Reference {
                 return null;
             });
             published.offer(reasoner, revision);
+        } catch (ArmorException e) {
+            if (e.exitCode() != ExitCode.TIMEOUT) {
+                coverage.close();
+                throw e;
+            }
+            // A reasoner that runs away at LOAD is stopped; the reference stays, its reasoner made afresh when asked.
+            loadTimeout = e;
         } catch (RuntimeException e) {
             coverage.close();
             throw e;
         }
+    }
+
+    /** The time limit the first reasoning ran into at LOAD, once (then empty). */
+    public Optional<ArmorException> takeLoadTimeout() {
+        Optional<ArmorException> taken = Optional.ofNullable(loadTimeout);
+        loadTimeout = null;
+        return taken;
     }
 
     /**
@@ -222,6 +238,26 @@ public final class Reference {
 
     public boolean isConsistent() {
         return consistent;
+    }
+
+    /** How this reference's ontology is reasoned on: in modules, or whole and why. Safe from any thread. */
+    public ReasoningPlan reasoningPlan() {
+        OWLReasoner current = reasoner;
+        if (current instanceof ModularReasoner modular) {
+            return modular.plan();
+        }
+        if (bufferedReasoner) {
+            return ReasoningPlan.whole("buffered reasoner (brought up to date at REASON)");
+        }
+        return current == null ? ReasoningPlan.NOT_YET : ReasoningPlan.whole(reasonerName
+                + " is not one of the reasoners ARMOR reasons in modules with (HERMIT, PELLET, JFACT)");
+    }
+
+    /** What LOAD says about the reference beyond success: what the reasoner will not use, and whole-ontology reasoning. */
+    public LoadStatement loadStatement() {
+        ReasoningPlan plan = reasoningPlan();
+        return new LoadStatement().with("coverage", coverage.loadReport())
+                .with("reasoning", plan.whole() && !bufferedReasoner ? "reasoning " + plan.describe() : "");
     }
 
     /**

@@ -64,6 +64,8 @@ final class Overview {
         summary.addProperty("buffered_manipulation", reference.settings().bufferedManipulation());
         summary.addProperty("buffered_reasoner", reference.settings().bufferedReasoner());
         summary.addProperty("consistent", reference.isConsistent());
+        summary.addProperty("reasoning", reference.reasoningPlan().describe());
+        summary.addProperty("reasoned_on_whole", reference.reasoningPlan().whole());
         String holder = reference.mountedBy();
         summary.addProperty("mounted_by", holder);
         if (!holder.isEmpty()) {
