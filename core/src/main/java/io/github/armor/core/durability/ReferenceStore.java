@@ -67,6 +67,8 @@ final class ReferenceStore {
     private int recordsSinceCheckpoint;
     private long lastCheckpointNanos = System.nanoTime();
     private boolean checkpointInFlight;
+    // The digest of the class hierarchy last written beside the checkpoint (HierarchySidecar).
+    private String hierarchyDigest;
 
     private ReferenceStore(Path dir, String name, Durability durability) {
         this.dir = dir;
@@ -89,6 +91,7 @@ final class ReferenceStore {
         store.checkpointSeq = 1;
         store.checkpointRevision = reference.revision();
         writeCheckpoint(snapshot(reference), store.checkpointFile(1));
+        store.keepHierarchy(reference, Runnable::run);
         store.startJournal(1);
         store.writeMeta(reference.mountedBy());
         return store;
@@ -97,6 +100,7 @@ final class ReferenceStore {
     /** Reads a reference's files, cutting torn journal tails, and opens it for appending again. */
     static Recovered recover(Path dir, Durability durability) throws IOException {
         JsonObject meta = JsonParser.parseString(Files.readString(dir.resolve("meta.json"))).getAsJsonObject();
+        HierarchySidecar.read(dir);
         ReferenceStore store = new ReferenceStore(dir, meta.get("name").getAsString(), durability);
         JsonObject s = meta.getAsJsonObject("settings");
         store.settings = new Reference.Settings(s.get("source").isJsonNull() ? null : s.get("source").getAsString(),
@@ -159,6 +163,7 @@ final class ReferenceStore {
      * must have no buffered changes waiting (a checkpoint holds applied changes only).
      */
     void maybeCheckpoint(Reference reference, Executor background) {
+        keepHierarchy(reference, background);
         long ageS = (System.nanoTime() - lastCheckpointNanos) / 1_000_000_000L;
         synchronized (this) {
             boolean due = recordsSinceCheckpoint >= durability.checkpointEveryChanges()
@@ -188,6 +193,15 @@ final class ReferenceStore {
             synchronized (this) {
                 checkpointInFlight = false;
             }
+        }
+    }
+
+    /** Writes the reference's class hierarchy beside the checkpoint when it has one not written yet. */
+    private void keepHierarchy(Reference reference, Executor background) {
+        io.github.armor.core.reasoning.ClassifiedSchema hierarchy = HierarchySidecar.of(reference);
+        if (hierarchy != null && !hierarchy.digest().equals(hierarchyDigest)) {
+            hierarchyDigest = hierarchy.digest();
+            background.execute(() -> HierarchySidecar.write(dir, hierarchy));
         }
     }
 
@@ -306,12 +320,12 @@ final class ReferenceStore {
     }
 
     @FunctionalInterface
-    private interface Writer {
+    interface Writer {
         void write(OutputStream out) throws IOException;
     }
 
     /** Temporary file, forced to disk, renamed over the target: readers see old or new, never half. */
-    private static void writeDurably(Path target, Writer writer) throws IOException {
+    static void writeDurably(Path target, Writer writer) throws IOException {
         Path temporary = target.resolveSibling(target.getFileName() + ".tmp");
         try (FileChannel channel = FileChannel.open(temporary, StandardOpenOption.CREATE, StandardOpenOption.WRITE,
                 StandardOpenOption.TRUNCATE_EXISTING)) {

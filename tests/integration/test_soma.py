@@ -1,0 +1,48 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""KnowRob's upper ontology over ROS 2 (issue 36): a kitchen of 40 individuals on SOMA-HOME and
+DUL is loaded, changed, reasoned on and asked within a generous bound, with the right answers.
+A regression check, not a timing claim: bench/soma.py measures (bench/REPORT.md, section 10).
+Before issue 36 the REASON alone ran for over 300 s on 12 individuals.
+"""
+
+import time
+
+from soma_kitchen import DEFINED_CLASS, SOMA, KitchenABox
+
+# Generous: on an idle 2-core machine the whole test takes well under a minute.
+BOUND_S = 600
+INSIDE = f'<{SOMA}isInsideOf>'
+
+
+def names(answer) -> list:
+    return sorted(iri.rstrip('>').rsplit('#', 1)[-1] for iri in answer.queried_objects)
+
+
+def test_a_kitchen_on_soma_home_answers_a_change_reason_and_query(armor_node, call):
+    kitchen = KitchenABox(40)
+    path = kitchen.write(armor_node.scratch / 'soma')
+    started = time.monotonic()
+    try:
+        loaded = call('soma_kitchen', 'LOAD FILE', str(path), '', 'false', 'HERMIT', 'false',
+                      timeout_s=BOUND_S)
+        assert loaded.success, f'{loaded.exit_code} {loaded.error_description}'
+        statement = loaded.error_description
+        assert statement.startswith('profile: '), statement
+        assert ' classes, ' in statement and 'reasoning in modules: ' in statement, statement
+        first = call('soma_kitchen', 'QUERY IND CLASS', DEFINED_CLASS, timeout_s=BOUND_S)
+        assert names(first) == kitchen.containers_with_cup()
+
+        move = kitchen.next_move()
+        moved = call('soma_kitchen', 'REPLACE OBJECTPROP IND', INSIDE, move.item, move.new,
+                     move.old, timeout_s=BOUND_S)
+        assert moved.success, moved.error_description
+        reasoned = call('soma_kitchen', 'REASON', timeout_s=BOUND_S)
+        assert reasoned.success and reasoned.is_consistent, reasoned.error_description
+        after = call('soma_kitchen', 'QUERY IND CLASS', DEFINED_CLASS, timeout_s=BOUND_S)
+        assert names(after) == kitchen.containers_with_cup()
+        assert move.new in names(after) and names(after) != names(first)
+        elapsed = time.monotonic() - started
+        assert elapsed < BOUND_S, elapsed
+    finally:
+        # DROP also stops the schema's classification if it still runs in the background.
+        call('soma_kitchen', 'DROP', timeout_s=120)
