@@ -590,6 +590,28 @@ public final class ModularReasoner implements OWLReasoner {
         return whole().getTypes(individual, direct);
     }
 
+    /**
+     * Realises the modules against all of {@code classes} at once, where they are not yet (over an
+     * upper ontology): for a caller about to ask the instances of many classes (SPARQL's inferred
+     * graph), which would otherwise realise the modules once per class.
+     */
+    public void realiseAgainst(java.util.Collection<OWLClass> classes) {
+        InferredState now = current();
+        if (now == null) {
+            return;
+        }
+        boolean more = false;
+        for (OWLClass owlClass : classes) {
+            if (!now.knows(owlClass) && now.inSignature(owlClass)) {
+                more |= asked.add(owlClass);
+            }
+        }
+        if (more) {
+            mode = Mode.NOT_REASONED;
+            current();
+        }
+    }
+
     @Override
     public NodeSet<OWLNamedIndividual> getInstances(OWLClassExpression expression, boolean direct) {
         InferredState now = consistentState();

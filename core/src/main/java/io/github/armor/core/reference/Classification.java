@@ -46,7 +46,7 @@ public record Classification(int classes, boolean kept, boolean classifiedNow, l
                 : nanos >= 1_000_000_000L ? String.format(Locale.ROOT, "%.1f s", seconds())
                 : String.format(Locale.ROOT, "%d ms", nanos / 1_000_000);
         if (running) {
-            return count + ", being classified in the background (" + time + " so far; class questions wait for it)";
+            return count + ", being classified in the background (" + time + " so far, class questions wait for it)";
         }
         if (!kept) {
             return count;
