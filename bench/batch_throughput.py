@@ -10,6 +10,9 @@ configuration starts from robotics.owl freshly loaded, runs the same warm-up lis
 measures lists until its count or its time budget (measured lists only) runs out. Configurations:
 - buffered reasoner: what manipulation itself costs (the reasoner sees changes at REASON);
 - non-buffered reasoner (the LOAD default): HermiT is brought up to date after every change.
+Every list must succeed, and after a configuration's lists (untimed) its reference must hold
+exactly the agents they added, each a RobotInRoom (an inference from both kinds of directive);
+InProcessBatchBench checks its two paths the same way.
 """
 
 import json
@@ -18,6 +21,7 @@ import statistics
 import subprocess
 import time
 
+from answers import checked, WrongAnswer
 from harness import (REPO, BenchNode, CoreSnapshot, Deadline, HARNESS_CLASS,
                      script_scale_and_scratch)
 
@@ -36,6 +40,11 @@ def configurations(lists_by_size: dict) -> list:
     return result
 
 
+def robots_in_rooms(lists: int, size: int) -> list:
+    """The RobotInRoom members after `lists` lists of `size` (InProcessBatchBench counts them)."""
+    return ['robot1', *(f'agent{n}_{i}' for n in range(lists) for i in range(size // 2))]
+
+
 def directive_list(reference: str, list_number: int, size: int) -> list:
     """The same list InProcessBatchBench.directives() builds."""
     directives = []
@@ -50,10 +59,8 @@ def directive_list(reference: str, list_number: int, size: int) -> list:
 
 def _service(node: BenchNode, reference: str, size: int, lists: int, buffered: bool,
              budget_s: float, warmup_lists: int) -> dict:
-    loaded = node.call(reference, 'LOAD FILE', str(ROBOTICS), '', 'false', 'HERMIT',
-                       str(buffered).lower(), timeout_s=120)
-    if not loaded.success:
-        raise RuntimeError(f'LOAD failed: {loaded.exit_code} {loaded.error_description}')
+    checked(node.call(reference, 'LOAD FILE', str(ROBOTICS), '', 'false', 'HERMIT',
+                      str(buffered).lower(), timeout_s=120), 'LOAD')
     seconds = []
     deadline = Deadline(budget_s)
     list_number = 0
@@ -64,12 +71,16 @@ def _service(node: BenchNode, reference: str, size: int, lists: int, buffered: b
         elapsed = time.perf_counter() - start
         if not answer.success:
             failed = [r for r in answer.armor_responses if r.exit_code not in (0, 212)]
-            raise RuntimeError(f'list {list_number} failed: {failed[:1]}')
+            raise WrongAnswer(f'list {list_number} failed: {failed[:1]}')
         if list_number >= warmup_lists:
             seconds.append(elapsed)
         else:
             deadline = Deadline(budget_s)  # the budget counts measured lists only
         list_number += 1
+    checked(node.call(reference, 'REASON', timeout_s=600), 'REASON')
+    checked(node.call(reference, 'QUERY IND CLASS', 'RobotInRoom', timeout_s=600),
+            f'{reference}: robots in rooms after {list_number} lists',
+            robots_in_rooms(list_number, size))
     node.call(reference, 'DROP', timeout_s=120)
     return {'path': 'service', 'list_size': size, 'lists': len(seconds),
             'directives': size * len(seconds), 'seconds': sum(seconds),

@@ -23,6 +23,8 @@ import time
 REPO = pathlib.Path(__file__).resolve().parents[1]
 NAMESPACE = f'/armor_call_bench_{os.getpid()}'
 WORDS = ['robotics', 'QUERY', 'IND', 'CLASS', '--', 'Room']
+# What every measured call must answer (robotics.owl's rooms), as IRIs.
+ROOMS = ['<http://www.example.org/robotics#bedroom>', '<http://www.example.org/robotics#kitchen>']
 PHASES = r'''
 import time, sys
 t0 = time.monotonic()
@@ -36,18 +38,24 @@ transport._directive.wait_for_service(timeout_sec=60)
 t3 = time.monotonic()
 transport.call(directive('', '', 'GET', 'ALL', 'REFS'), timeout_s=60)
 t4 = time.monotonic()
-transport.call(directive('bench', 'robotics', 'QUERY', 'IND', 'CLASS', ['Room']), timeout_s=60)
+answer = transport.call(directive('bench', 'robotics', 'QUERY', 'IND', 'CLASS', ['Room']),
+                        timeout_s=60)
 t5 = time.monotonic()
 transport.close()
+assert sorted(answer.queried_objects) == sorted(sys.argv[2:]), answer
 print(t1 - t0, t2 - t1, t3 - t2, t4 - t3, t5 - t4)
 '''
 
 
 def wall(argv, env):
+    """Seconds one `armor call` took; it must have printed the rooms."""
     started = time.monotonic()
     done = subprocess.run(argv, env=env, capture_output=True, text=True, timeout=120)
+    seconds = time.monotonic() - started
     assert done.returncode == 0, done.stderr
-    return time.monotonic() - started
+    assert sorted(line for line in done.stdout.splitlines() if line.startswith('<')) == ROOMS, \
+        done.stdout
+    return seconds
 
 
 def main():
@@ -67,9 +75,10 @@ def main():
         direct = [wall([*cli, '--no-relay', *WORDS], env) for _ in range(calls)]
         phases = []
         for _ in range(max(3, calls // 4)):
-            out = subprocess.run([sys.executable, '-c', PHASES, NAMESPACE], env=env,
-                                 capture_output=True, text=True, timeout=120).stdout
-            phases.append([float(x) for x in out.split()])
+            done = subprocess.run([sys.executable, '-c', PHASES, NAMESPACE, *ROOMS], env=env,
+                                  capture_output=True, text=True, timeout=120)
+            assert done.returncode == 0, done.stderr
+            phases.append([float(x) for x in done.stdout.split()])
         wall([*cli, *WORDS], env)  # starts the relay
         wall([*cli, *WORDS], env)  # the relay discovers the service
         relayed = [wall([*cli, *WORDS], env) for _ in range(calls)]

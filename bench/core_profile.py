@@ -17,6 +17,7 @@ import re
 import subprocess
 import time
 
+from answers import checked, WrongAnswer
 from batch_throughput import directive_list
 from harness import REPO, BenchNode, CoreSnapshot, Deadline, script_scale_and_scratch
 
@@ -93,13 +94,15 @@ def profile_batch(scratch: pathlib.Path, snapshot: CoreSnapshot, seconds: float,
     recording = scratch / 'batch.jfr'
     node = BenchNode(scratch, snapshot, parameters={'jvm_options': jfr_options(recording)})
     try:
-        node.call('profiled', 'LOAD FILE', str(REPO / 'ontologies' / 'robotics.owl'), '', 'false',
-                  'HERMIT', 'true', timeout_s=120)
+        checked(node.call('profiled', 'LOAD FILE', str(REPO / 'ontologies' / 'robotics.owl'),
+                          '', 'false', 'HERMIT', 'true', timeout_s=120), 'LOAD')
         deadline = Deadline(seconds)
         lists = 0
         while lists == 0 or not deadline.expired():
-            node.transport.call_list(directive_list('profiled', lists, list_size),
-                                     timeout_s=600)
+            answer = node.transport.call_list(directive_list('profiled', lists, list_size),
+                                              timeout_s=600)
+            if not answer.success:
+                raise WrongAnswer(f'list {lists} failed: {answer.armor_responses[:1]}')
             lists += 1
         dump(node.process.core_pid(), recording)
     finally:
@@ -118,7 +121,8 @@ def profile_single_adds(scratch: pathlib.Path, snapshot: CoreSnapshot, seconds: 
         deadline = Deadline(seconds)
         calls = 0
         while calls == 0 or not deadline.expired():
-            node.call('robotics', 'ADD IND CLASS', f'probe{calls}', 'Robot', timeout_s=600)
+            checked(node.call('robotics', 'ADD IND CLASS', f'probe{calls}', 'Robot',
+                              timeout_s=600), 'ADD')
             calls += 1
         dump(node.process.core_pid(), recording)
     finally:
@@ -137,17 +141,18 @@ def profile_cycle(scratch: pathlib.Path, snapshot: CoreSnapshot, abox_path: path
     node = BenchNode(scratch, snapshot, parameters={'jvm_options': jfr_options(recording)})
     workload = RoboticsABox(individuals)
     try:
-        node.call('profiled', 'LOAD FILE', str(abox_path), '', 'false', reasoner,
-                  str(buffered).lower(), timeout_s=600)
+        checked(node.call('profiled', 'LOAD FILE', str(abox_path), '', 'false', reasoner,
+                          str(buffered).lower(), timeout_s=600), 'LOAD')
         deadline = Deadline(seconds)
         cycles = 0
         while cycles == 0 or (not deadline.expired() and workload.moves_left):
             move = workload.next_move()
-            node.call('profiled', 'REPLACE OBJECTPROP IND', 'isIn', move.agent, move.new_room,
-                      move.old_room, timeout_s=600)
+            checked(node.call('profiled', 'REPLACE OBJECTPROP IND', 'isIn', move.agent,
+                              move.new_room, move.old_room, timeout_s=600), 'REPLACE')
             if with_reason:
-                node.call('profiled', 'REASON', timeout_s=600)
-            node.call('profiled', 'QUERY IND CLASS', 'OccupiedRoom', timeout_s=600)
+                checked(node.call('profiled', 'REASON', timeout_s=600), 'REASON')
+            checked(node.call('profiled', 'QUERY IND CLASS', 'OccupiedRoom', timeout_s=600),
+                    f'cycle {cycles} of the profile', workload.occupied_rooms())
             cycles += 1
         dump(node.process.core_pid(), recording)
     finally:

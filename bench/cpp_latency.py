@@ -8,7 +8,7 @@ Starts a node in a namespace of its own, loads robotics.owl twice (one copy per 
 then, in alternating rounds so that the machine's noise falls on both alike, times with each
 client: a query (instances of Room), a manipulation (an individual added to a class) and an
 atomic list of 10 such changes. Each client is a process of its own with the same arguments
-and output: build/armor_cpp/armor_cpp_round_trips (make setup builds it) and
+and output: build/armor_cpp/armor_cpp_round_trips (tools/setup.sh test builds it) and
 bench/round_trips.py.
 The node runs with journal_fsync:=false, so that a change's time is the clients' and the
 node's, not that of this machine's shared disk. Prints p50/p99 per call and client, and the
@@ -47,7 +47,7 @@ def main() -> None:
     options.add_argument('--rounds', type=int, default=3)
     arguments = options.parse_args()
     if not ROUND_TRIPS.exists():
-        sys.exit(f'{ROUND_TRIPS} is missing: run make setup')
+        sys.exit(f'{ROUND_TRIPS} is missing: run bash tools/setup.sh test')
     sys.path.insert(0, str(REPO / 'tests' / 'integration'))
     sys.path.insert(0, str(REPO / 'bench'))
     from conftest import ONTOLOGIES, start_node  # reserves a DDS domain of its own

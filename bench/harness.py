@@ -196,7 +196,7 @@ class Scale:
     warmup_lists: int                    # per configuration and path, before measuring
     batch_budget_s: float                # per path and configuration
     abox_sizes: List[int]
-    cycles: int                          # per reasoner and mode
+    cycles: int                          # per reasoner and mode (2+: a room filled, then emptied)
     cycle_budget_s: Dict[int, float]     # per reasoner and mode, by ABox size
     owlready_budget_s: Dict[int, float]  # per owlready2 reasoner, by ABox size
     profile_s: float
@@ -217,7 +217,7 @@ SCALES = {
                   large_abox=100000, large_budget_s=240, busy_abox=30000, busy_idle_calls=200,
                   busy_writes=4, busy_budget_s=240, jvm_variants=6),
     'smoke': Scale('smoke', latency_calls=20, batch_lists={10: 2, 100: 1}, warmup_lists=1,
-                   batch_budget_s=5, abox_sizes=[20], cycles=1, cycle_budget_s={20: 15},
+                   batch_budget_s=5, abox_sizes=[20], cycles=2, cycle_budget_s={20: 15},
                    owlready_budget_s={20: 20}, profile_s=2, large_abox=200, large_budget_s=30,
                    busy_abox=100, busy_idle_calls=5, busy_writes=2, busy_budget_s=30,
                    jvm_variants=2),

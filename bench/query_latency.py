@@ -12,6 +12,8 @@ noise, and the ratios service/floor are the figures that matter on a shared mach
 QUERY is QUERY IND CLASS OccupiedRoom (an inferred answer). ADD is ADD IND CLASS of a new
 individual each call, on the preloaded reference and on a second reference whose reasoner is
 buffered (it only sees changes at REASON), which isolates the reasoner's share of an ADD.
+Every answer is checked (bench/answers.py): the query's rooms, and after the ADDs (untimed)
+that each reference's robots are exactly the ones added.
 Run as a script it measures and prints; the suite (bench/suite.py) calls measure().
 """
 
@@ -24,6 +26,7 @@ import tempfile
 import threading
 import time
 
+from answers import checked, ROBOTICS_OCCUPIED_ROOMS
 from harness import REPO, BenchNode, CoreSnapshot, Deadline, latency_summary, stop_process
 
 COMMANDS = ('QUERY', 'ADD')
@@ -53,7 +56,7 @@ class EchoFloor:
         future.add_done_callback(lambda _: done.set())
         if not done.wait(30):
             raise RuntimeError('echo service did not answer within 30 s')
-        return future.result()
+        return checked(future.result().armor_response, 'echo', ROBOTICS_OCCUPIED_ROOMS)
 
     def stop(self):
         stop_process(self.process)
@@ -100,6 +103,19 @@ DIRECTIVES = {
     'QUERY': lambda i: ('QUERY IND CLASS', 'OccupiedRoom'),
     'ADD': lambda i: ('ADD IND CLASS', f'probe{i}', 'Robot'),
 }
+# What each command's answer holds: the occupied rooms; nothing.
+ANSWERS = {'QUERY': ROBOTICS_OCCUPIED_ROOMS, 'ADD': ()}
+
+
+def check_robots(call, reference: str, probes: int, what: str) -> None:
+    """After `probes` ADDs of probe0.. on reference: its robots are robotics.owl's and those.
+
+    call(reference, words, *args) answers a directive; a buffered reasoner is brought up to
+    date first. Not timed: it checks that the measured ADDs did what they were sent for.
+    """
+    checked(call(reference, 'REASON'), f'{what}: REASON')
+    checked(call(reference, 'QUERY IND CLASS', 'Robot'), f'{what}: robots after the ADDs',
+            ['robot1', *(f'probe{i}' for i in range(probes))])
 
 
 def core_alone(command: str, calls: int, scratch: pathlib.Path, jar: str) -> dict:
@@ -116,14 +132,15 @@ def _core_alone_worker(command: str, calls: int, scratch: pathlib.Path, jar: str
     core = CoreAlone(scratch, jar)
     try:
         samples = []
-        for i in range(-min(50, calls), calls):
-            directive = DIRECTIVES[command](i + calls)
+        warmup = min(50, calls)
+        for i in range(-warmup, calls):
+            directive = DIRECTIVES[command](i + warmup)
             seconds, answer = _timed(lambda: core.call('robotics', *directive))
-            if not answer.success:
-                raise RuntimeError(f'{command} failed: {answer.exit_code} '
-                                   f'{answer.error_description}')
+            checked(answer, f'core alone, {command}', ANSWERS[command])
             if i >= 0:
                 samples.append(seconds)
+        if command == 'ADD':
+            check_robots(core.call, 'robotics', warmup + calls, 'core alone')
         return latency_summary(samples)
     finally:
         core.stop()
@@ -162,20 +179,24 @@ def measure(calls: int, scratch: pathlib.Path, snapshot: CoreSnapshot, commands=
             samples = {name: [] for name in [*paths[command], *floors]}
             warmup = min(50, calls)
             deadline = Deadline(budget_s)
+            sent = 0
             for i in range(-warmup, calls):
                 if deadline.expired():
                     break
+                sent += 1
                 for name, call in paths[command].items():
                     seconds, answer = _timed(lambda: call(i + warmup))
-                    if not answer.success:
-                        raise RuntimeError(f'{command} failed: {answer.exit_code} '
-                                           f'{answer.error_description}')
+                    checked(answer, f'{name}, {command}', ANSWERS[command])
                     if i >= 0:
                         samples[name].append(seconds)
                 for name, floor in floors.items():
                     seconds, _ = _timed(floor.call)
                     if i >= 0:
                         samples[name].append(seconds)
+            if command == 'ADD':
+                for reference in ('robotics', 'robotics_buffered'):
+                    check_robots(lambda *d: node.call(*d, timeout_s=120), reference, sent,
+                                 f'service, {reference}')
             results[command] = {name: latency_summary(values) for name, values in samples.items()}
             results[command]['core_alone'] = core_alone(command, len(samples['service']),
                                                         scratch / f'alone-{command}',

@@ -64,10 +64,18 @@ def recommend(reasoning: dict) -> Tuple[Optional[Tuple[str, str]], str]:
     return candidates[0][1:3], why
 
 
-def _best_owlready(sides: dict) -> Optional[Tuple[float, str]]:
-    best = [(summarise(r)['cycle_p50_ms'], name) for name, r in sides['owlready2'].items()
-            if summarise(r)['cycles'] and summarise(r)['correct']]
-    return min(best) if best else None
+def _best_owlready(sides: dict) -> Optional[Tuple[float, str, bool]]:
+    """owlready2's fastest cycle (p50 ms, reasoner, every answer right), right ones first.
+
+    owlready2 keeps an inferred type after the fact behind it is gone, so it answers wrongly
+    once a room empties; its time is still what a Python robot would pay, and says so.
+    """
+    runs = [(not summarise(r)['correct'], summarise(r)['cycle_p50_ms'], name)
+            for name, r in sides['owlready2'].items() if summarise(r)['cycles']]
+    if not runs:
+        return None
+    wrong, p50_ms, name = min(runs)
+    return p50_ms, name, not wrong
 
 
 def _memory(modes: dict) -> Dict[str, float]:
@@ -356,8 +364,9 @@ def render(results: dict) -> str:
         if choice:
             figures = summarise(sides['service'][choice[0]][choice[1]])
             cycle = figures['cycle_p50_ms']
-            reference = (f'owlready2 {best[1]} {_ms(best[0])}' if best
-                         else 'owlready2: no correct cycle in its budget')
+            reference = (f'owlready2 {best[1]} {_ms(best[0])}'
+                         + ('' if best[2] else ' (answers wrong once a room empties)') if best
+                         else 'owlready2: no cycle in its budget')
             speedup = f'{best[0] / cycle:.1f}x faster' if best and cycle else '-'
             rows.append([f'3. reasoning cycle, {individuals:,} individuals, {choice[0]} '
                          f'({choice[1]})', _ms(cycle), reference, speedup, 'faster than owlready2',
@@ -428,9 +437,11 @@ def render(results: dict) -> str:
     out += ['## 3. Reasoning under updates', '',
             'ABox of N individuals on ontologies/robotics.owl (a fifth rooms in a corridor chain, '
             'the rest robots and people, two or more per room in half the rooms). One cycle: an '
-            'agent moves into an empty room (REPLACE OBJECTPROP IND isIn), REASON, QUERY IND '
-            'CLASS OccupiedRoom (a defined class: Room and contains some Agent, contains being '
-            'the inverse of isIn). Every answer is checked against the known right one. '
+            'agent moves (REPLACE OBJECTPROP IND isIn), REASON, QUERY IND CLASS OccupiedRoom (a '
+            'defined class: Room and contains some Agent, contains being the inverse of isIn). '
+            'Moves alternate: one fills an empty room, the next walks that agent on and empties '
+            'it again, which must leave the answer. Every answer is checked against the known '
+            'right one. '
             '"first" is the first REASON (or the first query, without REASON): the whole ABox '
             'is realised there. owlready2 does the same cycle with its bundled reasoners '
             '(`sync_reasoner_hermit` / `sync_reasoner_pellet`, property values not inferred), '

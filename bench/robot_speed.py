@@ -25,6 +25,7 @@ import time
 from typing import Dict, List
 
 from abox import RoboticsABox
+from answers import short_names
 from harness import BenchNode, CoreSnapshot, Deadline, script_scale_and_scratch
 from reasoning_cycle import ROBOT_MODE, WHOLE_ONTOLOGY, _run_mode, summarise
 
@@ -77,15 +78,15 @@ def _busy_reads(node: BenchNode, abox_path: pathlib.Path, individuals: int, reas
     reader = ArmorTransport(namespace=node.namespace, service_wait_s=120)
     samples: List[dict] = []
     writer_spans: List[tuple] = []
+    writes_failed: List[str] = []
 
     def query():
         start = time.perf_counter()
         answer = reader.call(BenchNode.directive(reference, 'QUERY IND CLASS', 'OccupiedRoom'),
                              timeout_s=max(deadline.left(), 1.0))
         end = time.perf_counter()
-        names = sorted(i.rstrip('>').rsplit('#', 1)[-1] for i in answer.queried_objects)
         return {'start': start, 'end': end, 'ms': (end - start) * 1000,
-                'right': answer.success and names == expected,
+                'right': answer.success and short_names(answer) == expected,
                 'revision': 'revision' in answer.error_description}
 
     try:
@@ -100,8 +101,11 @@ def _busy_reads(node: BenchNode, abox_path: pathlib.Path, individuals: int, reas
                     break
                 words = 'ADD CLASS CLASS' if i % 2 == 0 else 'REMOVE CLASS CLASS'
                 start = time.perf_counter()
-                node.call(reference, words, 'Vehicle', 'Agent', timeout_s=max(deadline.left(), 1))
+                answer = node.call(reference, words, 'Vehicle', 'Agent',
+                                   timeout_s=max(deadline.left(), 1))
                 writer_spans.append((start, time.perf_counter()))
+                if not answer.success:
+                    writes_failed.append(answer.error_description)
             stop.set()
 
         writer = threading.Thread(target=write, name='bench-writer')
@@ -120,7 +124,7 @@ def _busy_reads(node: BenchNode, abox_path: pathlib.Path, individuals: int, reas
         'busy_max_ms': max((s['ms'] for s in busy), default=None),
         'busy_reads': len(busy),
         'marked': sum(s['revision'] for s in busy),
-        'right': all(s['right'] for s in idle + busy),
+        'right': all(s['right'] for s in idle + busy) and not writes_failed,
         'write_p50_s': (statistics.median(b - a for a, b in writer_spans)
                         if writer_spans else None),
         'writes': len(writer_spans), 'note': ''}

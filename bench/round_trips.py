@@ -7,7 +7,8 @@
 Against the node in NAMESPACE with REFERENCE loaded from robotics.owl: after a warm-up,
 CALLS round trips of each kind (a query; a change; an atomic list of 10 changes, the changes
 moving robot1 back and forth so that every call finds the same ontology); prints one line per
-kind, ``kind s1 s2 ...`` in seconds, and leaves the ontology as it found it. Used by
+kind, ``kind s1 s2 ...`` in seconds, and leaves the ontology as it found it. Every answer is
+checked (the rooms; where robot1 is after the changes): a wrong one stops it. Used by
 cpp_latency.py and fleet_latency.py, which start one process per client so both are measured
 alike.
 """
@@ -30,6 +31,12 @@ def timed(calls, call):
 ROOMS = ('kitchen', 'bedroom')
 
 
+def expect(answer, right, what):
+    """Stops the run when an answer is not the one its figure assumes."""
+    if answer != right:
+        raise SystemExit(f'round_trips: wrong answer to {what}: {answer}, not {right}')
+
+
 def move(target, i):
     """robot1 from one room to the other: calls i and i + 1 undo each other."""
     target.replace_object_value('isIn', 'robot1', ROOMS[(i + 1) % 2], ROOMS[i % 2])
@@ -48,14 +55,20 @@ def main():
         for _ in range(20):
             reference.instances('Room')
         kinds = {
-            'query': lambda i: reference.instances('Room'),
+            'query': lambda i: expect(reference.instances('Room'), ['bedroom', 'kitchen'],
+                                      'a query'),
             'manipulation': lambda i: move(reference, i),
             'list_of_10': lambda i: move_ten_times(reference, i),
         }
         for kind, call in kinds.items():
             print(kind, *timed(calls, call), flush=True)
-            if kind == 'manipulation' and calls % 2:
-                move(reference, 1)  # back to the kitchen before the lists start from there
+            if kind == 'manipulation':
+                expect(reference.object_values('isIn', 'robot1'), [ROOMS[calls % 2]],
+                       'where robot1 went')
+                if calls % 2:
+                    move(reference, 1)  # back to the kitchen before the lists start from there
+        expect(reference.object_values('isIn', 'robot1'), ['kitchen'],
+               'where the lists left robot1')
 
 
 if __name__ == '__main__':

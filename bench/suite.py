@@ -8,7 +8,13 @@
 (tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set
 with the environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
 (query_latency.py, batch_throughput.py, reasoning_cycle.py, robot_speed.py,
-core_profile.py, lubm.py, default_clients.py, real_shapes.py).
+core_profile.py, lubm.py, default_clients.py, real_shapes.py, scenes.py). Section 10 (scenes)
+runs at full scale only; `python bench/scenes.py --smoke` is its small run
+(tests/integration/test_bench_smoke.py).
+
+Every figure stands on checked answers (bench/answers.py): a benchmark stops at a wrong answer
+of ARMOR's, or records it where it also measures alternatives; the suite then writes the report
+and fails, naming each ARMOR figure whose answers were wrong.
 """
 
 import argparse
@@ -22,6 +28,7 @@ import sys
 import tempfile
 import time
 
+from answers import wrong_in
 from harness import REPO, SCALES, CoreSnapshot
 import batch_throughput
 import core_profile
@@ -32,6 +39,7 @@ import real_shapes
 import reasoning_cycle
 import report
 import robot_speed
+import scenes
 
 
 def _command_output(*command: str) -> str:
@@ -131,6 +139,9 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
         scratch, snapshot, **default_clients.SUITE_SIZES[scale_name])
     stage('9. the ontologies robots really use (issue 28)')
     results['real_shapes'] = real_shapes.measure(scratch, snapshot, scale_name)
+    if scale_name == 'full':
+        stage('10. scenes by demonstration (issue 32)')
+        results['scenes'] = scenes.measure(scratch, snapshot, scale_name)
     results['duration_s'] = time.monotonic() - started
     (scratch / 'results.json').write_text(json.dumps(results, indent=2, default=str))
     report_path.write_text(report.render(results) + '\n\n'
@@ -138,7 +149,9 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
                            + default_clients.render(results['default_clients']) + '\n\n'
                            + '## 9. The ontologies robots really use (issue 28)\n\n'
                            + real_shapes.__doc__.split('\n\n', 2)[2].strip() + '\n\n'
-                           + real_shapes.render(results['real_shapes']) + '\n')
+                           + real_shapes.render(results['real_shapes']) + '\n'
+                           + ('\n## 10. Scenes by demonstration (issue 32)\n\n'
+                              + scenes.render(results['scenes']) if 'scenes' in results else ''))
     stage(f'report written to {report_path} (raw figures: {scratch / "results.json"})')
     return results
 
@@ -149,7 +162,10 @@ def main():
                         default=os.environ.get('ARMOR_BENCH_SCALE', 'full'))
     parser.add_argument('--report', type=pathlib.Path, default=REPO / 'bench' / 'REPORT.md')
     options = parser.parse_args()
-    run(options.scale, options.report)
+    wrong = wrong_in(run(options.scale, options.report))
+    if wrong:
+        sys.exit('wrong answers behind these figures:\n  ' + '\n  '.join(wrong))
+    print('every checked answer was right', file=sys.stderr)
 
 
 if __name__ == '__main__':

@@ -39,6 +39,7 @@ import threading
 import time
 from typing import Dict, List
 
+from answers import checked
 from harness import REPO, BenchNode, CoreSnapshot, latency_summary, peak_rss_mib
 
 sys.path.insert(0, str(REPO / 'tests' / 'integration'))
@@ -192,8 +193,9 @@ def round_trips(node: BenchNode, mover: Mover, stop: threading.Event) -> Dict[st
     while not stop.is_set():
         begun = time.perf_counter()
         # Alice's most specific types: a reasoner's answer, a few names long.
-        node.call(REFERENCE, 'QUERY CLASS IND', 'alice', 'true')
+        answer = node.call(REFERENCE, 'QUERY CLASS IND', 'alice', 'true')
         times['QUERY'].append(time.perf_counter() - begun)
+        checked(answer, "alice's most specific types", ['Person'])
         begun = time.perf_counter()
         mover.move()
         times['REPLACE'].append(time.perf_counter() - begun)
@@ -224,8 +226,14 @@ def cost_of_pages(browser, url: str, node: BenchNode, mover: Mover, pages: int,
             open_pages[-1].wait_for_selector('#graph-note:has-text("links")', timeout=180_000)
         result: Dict[str, Dict[str, List[float]]] = {}
         stop = threading.Event()
-        worker = threading.Thread(target=lambda: result.update(
-            times=round_trips(node, mover, stop)))
+        failed: List[Exception] = []
+
+        def client():
+            try:
+                result.update(times=round_trips(node, mover, stop))
+            except Exception as error:  # a wrong answer: the phase's figures mean nothing
+                failed.append(error)
+        worker = threading.Thread(target=client)
         cpu_before = cpu_seconds(node.process.process.pid)
         worker.start()
         turn = 0
@@ -245,6 +253,8 @@ def cost_of_pages(browser, url: str, node: BenchNode, mover: Mover, pages: int,
             passes[0] += 1
         stop.set()
         worker.join()
+        if failed:
+            raise failed[0]
         node_cpu[phase] += cpu_seconds(node.process.process.pid) - cpu_before
         for command, samples in result['times'].items():
             phases[phase][command].extend(samples)

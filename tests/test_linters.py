@@ -18,8 +18,8 @@ from catkin_pkg.package import parse_package
 import pytest
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
-PYTHON_PACKAGES = ('armor_contract', 'armor_service', 'armor_client')
-ROS_PACKAGES = ('armor_msgs', 'armor_cpp', *PYTHON_PACKAGES)
+PYTHON_PACKAGES = ('armor_contract', 'armor_service', 'armor_client', 'sit_armor_injected')
+ROS_PACKAGES = ('armor_msgs', 'armor_cpp', 'sit_armor_injected_msgs', *PYTHON_PACKAGES)
 COPYRIGHT = '# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.'
 
 

@@ -19,18 +19,31 @@ import xml.etree.ElementTree as ET
 REPO = pathlib.Path(__file__).resolve().parents[1]
 
 
+POM = '{http://maven.apache.org/POM/4.0.0}'
+
+
 def _versions() -> dict:
+    """Every place a version of this repository is written, found without a list to forget:
+    each package.xml and setup.py, each pom.xml (and a dependency on the core), CMake projects."""
     found = {}
-    for package in ('armor_msgs', 'armor_contract', 'armor_service', 'armor_client'):
-        found[f'{package}/package.xml'] = ET.parse(REPO / package / 'package.xml').findtext(
-            'version')
-    for package in ('armor_contract', 'armor_service', 'armor_client'):
-        tree = ast.parse((REPO / package / 'setup.py').read_text())
-        found[f'{package}/setup.py'] = next(
+    for manifest in sorted(REPO.glob('*/package.xml')):
+        found[str(manifest.relative_to(REPO))] = ET.parse(manifest).findtext('version')
+    for setup in sorted([*REPO.glob('*/setup.py'), *REPO.glob('examples/plugins/*/setup.py')]):
+        tree = ast.parse(setup.read_text())
+        found[str(setup.relative_to(REPO))] = next(
             keyword.value.value for node in ast.walk(tree) if isinstance(node, ast.Call)
             for keyword in node.keywords if keyword.arg == 'version')
-    pom = ET.parse(REPO / 'core' / 'pom.xml').getroot()
-    found['core/pom.xml'] = pom.findtext('{http://maven.apache.org/POM/4.0.0}version')
+    for pom_file in sorted([REPO / 'core' / 'pom.xml', *REPO.glob('plugins/*/pom.xml')]):
+        pom = ET.parse(pom_file).getroot()
+        name = str(pom_file.relative_to(REPO))
+        found[name] = pom.findtext(f'{POM}version')
+        for dependency in pom.iter(f'{POM}dependency'):
+            if dependency.findtext(f'{POM}artifactId') == 'armor-core':
+                found[f'{name} (armor-core dependency)'] = dependency.findtext(f'{POM}version')
+    for cmake in sorted(REPO.glob('*/CMakeLists.txt')):
+        project = re.search(r'^project\(\S+ VERSION (\S+)', cmake.read_text(), re.MULTILINE)
+        if project:
+            found[str(cmake.relative_to(REPO))] = project.group(1)
     found['CHANGELOG.md'] = re.search(r'^## (\S+)', (REPO / 'CHANGELOG.md').read_text(),
                                       re.MULTILINE).group(1)
     return found
@@ -38,6 +51,9 @@ def _versions() -> dict:
 
 def test_every_package_the_core_and_the_changelog_carry_one_version():
     versions = _versions()
+    for written in ('armor_cpp/package.xml', 'armor_cpp/CMakeLists.txt', 'armor_msgs/package.xml',
+                    'plugins/pddl/pom.xml', 'plugins/pddl/pom.xml (armor-core dependency)'):
+        assert written in versions, sorted(versions)
     assert len(set(versions.values())) == 1, versions
     assert re.fullmatch(r'\d+\.\d+\.\d+', versions['core/pom.xml']), versions
 
@@ -53,7 +69,8 @@ def test_the_licence_is_the_apache_2_0_text_the_packages_declare():
     text = (REPO / 'LICENSE').read_text()
     assert 'Apache License' in text and 'Version 2.0, January 2004' in text
     assert 'TERMS AND CONDITIONS FOR USE, REPRODUCTION, AND DISTRIBUTION' in text
-    for package in ('armor_msgs', 'armor_contract', 'armor_service', 'armor_client'):
+    for package in ('armor_msgs', 'armor_contract', 'armor_service', 'armor_client',
+                    'sit_armor_injected_msgs', 'sit_armor_injected'):
         assert ET.parse(REPO / package / 'package.xml').findtext('license') == 'Apache-2.0'
 
 

@@ -25,7 +25,18 @@ print(f'core and plugins: Tests run: {runs}, Failures: {failures}, Errors: {erro
 PY
 
 echo "== C++ client: GoogleTest without a node (ctest; its live tests run under pytest)"
-ctest --test-dir build/armor_cpp --output-on-failure
+ctest --test-dir build/armor_cpp --output-on-failure --output-junit ctest-junit.xml
+# ctest counts a case that skipped itself (GTEST_SKIP) as not run and still exits 0: here a
+# skipped case is no pass.
+python3 - <<'PY'
+import xml.etree.ElementTree as ET
+cases = list(ET.parse('build/armor_cpp/ctest-junit.xml').getroot().iter('testcase'))
+skipped = [case.get('name') for case in cases if case.find('skipped') is not None]
+if skipped:
+    raise SystemExit(f'C++ client: {len(skipped)} of {len(cases)} GoogleTest cases skipped, '
+                     'which is no pass: ' + ', '.join(skipped))
+print(f'C++ client: {len(cases)} GoogleTest cases passed, none skipped')
+PY
 
 echo "== node, client and CLI: pytest over ROS 2"
 python -m pytest -p no:cacheprovider "$@"

@@ -28,6 +28,8 @@ _EXPORTS = {
     'AcknowledgedChange': 'armor_client.operations', 'ChangeHistory': 'armor_client.operations',
     'Armor': 'armor_client.reference', 'Reference': 'armor_client.reference',
     'ArmorTransport': 'armor_client.transport', 'directive': 'armor_client.transport',
+    'SceneAnswer': 'armor_client.scenes', 'SceneClass': 'armor_client.scenes',
+    'Recognition': 'armor_client.scenes',
     **{name: 'armor_client.subscriptions' for name in (
         'AnswerChange', 'Change', 'ChangeWatch', 'Subscription')},
     **{name: 'armor_client.errors' for name in (

@@ -8,10 +8,12 @@ command-line tools parse and complete directives with it, after learning from th
 node (``learn``) the commands its plugins add.
 """
 
-from typing import Dict, Iterable, List, Optional, Sequence, Tuple
+import difflib
+import json
+from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple
 
 from armor_contract.catalogue import (  # noqa: F401  (the kinds are part of this module's API)
-    Command, CREATING, DROPPING, GLOBAL, load, MANIPULATION, MOUNTING, QUERY, REFERENCE)
+    Command, CREATING, DROPPING, GLOBAL, load, MANIPULATION, MOUNTING, parse, QUERY, REFERENCE)
 
 COMMANDS: Tuple[Command, ...] = load().commands
 
@@ -35,6 +37,32 @@ def learn(answered: Iterable[Command]) -> List[Command]:
             _BY_WORDS.setdefault(words, command)
     COMMANDS = COMMANDS + tuple(added)
     return added
+
+
+def find_on(transport: Any, command: str, primary: str = '',
+            secondary: str = '') -> Optional[Command]:
+    """find(), after learning the node's catalogue when the words are unknown here.
+
+    A plugin's commands are known only to the node that loaded it; a client that needs their
+    argument names (which are paths) asks the node once, through ``transport``.
+
+    Args:
+        transport: an ArmorTransport to the node.
+        command: the command word.
+        primary: the primary spec.
+        secondary: the secondary spec.
+
+    Returns:
+        The entry, or None when the node does not answer that combination either.
+    """
+    found = find(command, primary, secondary)
+    if found is None and command.strip():
+        from armor_client.transport import directive
+        response = transport.call(directive('armor_cli', '', 'GET', 'CATALOGUE'))
+        if response.success and response.queried_objects:
+            learn(parse(json.loads(response.queried_objects[0])).commands)
+            found = find(command, primary, secondary)
+    return found
 
 
 def find(command: str, primary: str = '', secondary: str = '') -> Optional[Command]:
@@ -72,8 +100,60 @@ def split_directive(words: Sequence[str]) -> Tuple[Optional[Command], List[str]]
         if len(words) >= length:
             command = find(*words[:length])
             if command is not None:
-                return command, list(words[length:])
+                arguments = list(words[length:])
+                if length < 3 and _misspelt_spec(words[:length], command, arguments):
+                    return None, arguments[1:]
+                return command, arguments
     return None, list(words)
+
+
+def as_typed(words: Sequence[str]) -> Tuple[Tuple[str, str, str], List[str]]:
+    """The specs and arguments of words that name no known command, split as the user meant.
+
+    Sent so, the node answers 205 naming the closest commands (``QUERY IND CLAS Room`` is
+    QUERY IND CLAS with ``Room``, not QUERY IND with two arguments). The specs are the longest
+    known start plus the next word, or, when even the first word is unknown, it and the words
+    after it written like it (letters, in the same case); ``--`` ends them early.
+
+    Args:
+        words: the words as typed.
+
+    Returns:
+        ((command, primary, secondary), arguments).
+
+    Raises:
+        RuntimeError: more than three words before ``--``.
+    """
+    words = list(words)
+    if '--' in words:
+        cut = words.index('--')
+        if cut > 3:
+            raise RuntimeError('at most COMMAND PRIMARY SECONDARY before "--"; put the arguments '
+                               f'after "--" (got {" ".join(words[:cut])})')
+        specs, arguments = words[:cut], words[cut + 1:]
+    else:
+        known = next((n for n in (2, 1) if len(words) > n and find(*words[:n])), 0)
+        count = known + 1
+        while (not known and count < min(3, len(words)) and words[count].isalpha()
+               and words[count].isupper() == words[0].isupper()):
+            count += 1
+        specs, arguments = words[:count], words[count:]
+    command, primary, secondary = (specs + ['', '', ''])[:3]
+    return (command, primary, secondary), arguments
+
+
+def _misspelt_spec(typed: Sequence[str], command: Command, arguments: Sequence[str]) -> bool:
+    """Whether the first argument is rather a misspelt spec.
+
+    So it is when the command cannot take the arguments as they are, and that word is close
+    to a spec that can follow.
+    """
+    count = len(arguments)
+    takes = len(command.required) <= count and (
+        command.variadic or count <= len(command.required) + len(command.optional))
+    return (not takes and bool(arguments)
+            and bool(difflib.get_close_matches(arguments[0].upper(), next_words(typed), n=1,
+                                               cutoff=0.75)))
 
 
 def next_words(typed: Sequence[str]) -> List[str]:

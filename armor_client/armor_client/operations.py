@@ -19,6 +19,7 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 from armor_client.errors import error_for
 from armor_client.planning import PlannerBridge
+from armor_client.scenes import Scenes
 from armor_contract import catalogue
 from armor_client.values import answer_value, entity_iri, short_name, typed_argument, Value
 
@@ -97,13 +98,18 @@ class ChangeHistory(list):
 
     Attributes:
         complete: False when some changes after that revision are no longer kept (the node
-            keeps a reference's latest 10,000 changes); ``note`` then says from where it starts.
+            keeps a reference's latest 10,000 changes), or when the answer holds only the first
+            of them; ``note`` then says which.
+        more_after: the revision to ask from again for the changes one answer left out (an
+            answer holds at most 1,000 changes or 1 MiB), or None when none were.
     """
 
     def __init__(self, changes: Sequence[AcknowledgedChange], note: str):
         super().__init__(changes)
         self.note = note
         self.complete = not note
+        more = re.search(r'more changes after revision (\d+)', note)
+        self.more_after = int(more.group(1)) if more else None
 
 
 def _command_words(command: str) -> Tuple[str, ...]:
@@ -1011,7 +1017,8 @@ class ReferenceCommands:
         """Write the ontology to a file on the node's machine (SAVE / SAVE INFERENCE).
 
         Args:
-            path: where ('' = the file it was loaded from); inside the node's allowed_dirs.
+            path: where ('' = the file it was loaded from); a relative path is the
+                caller's (made absolute here); inside the node's allowed_dirs.
             format: rdfxml, owlxml, turtle, functional or manchester ('' = as loaded).
             inferences: also write the inferred types, property values and hierarchy (the
                 live ontology does not change).
@@ -1082,7 +1089,8 @@ class SessionCommands:
 
         Args:
             name: the reference name.
-            path: the file, as the node sees it (inside its allowed_dirs).
+            path: the file on the node's machine, inside its allowed_dirs; a relative path
+                is the caller's (made absolute here).
             iri: the ontology IRI that plain names resolve against ('' = the file's own).
             reasoner: HERMIT, PELLET, JFACT, ELK or '' for the node's default.
             buffered_manipulation: queue changes until apply() or reason().
@@ -1240,14 +1248,15 @@ class SessionCommands:
         """Log directives to a file on the node's machine, or stop (LOG FILE ON/OFF).
 
         Args:
-            path: the log file (inside the node's allowed_dirs); None stops logging to a file.
+            path: the log file (inside the node's allowed_dirs; a relative path is the
+                caller's); None stops logging to a file.
         """
         if path is None:
             return self._session('', ('LOG', 'FILE', 'OFF'), [], Answers.nothing)
         return self._session('', ('LOG', 'FILE', 'ON'), [path], Answers.nothing)
 
 
-class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge):
+class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge, Scenes):
     """What Reference and AsyncReference share: the state, sending, and reading an answer.
 
     Each directive goes through the session's ``call``, and its answer through the session's

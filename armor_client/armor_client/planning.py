@@ -9,18 +9,21 @@ import json
 import os
 from typing import Any, Callable, Mapping, Sequence, Tuple, Union
 
+from armor_client.paths import absolute
+
 MappingArgument = Union[str, 'os.PathLike[str]', Mapping[str, Any]]
 
 
 def mapping_argument(mapping: MappingArgument) -> str:
-    """The mapping as the directive carries it: a path on the node's machine, or the text itself.
+    """The mapping as the directive carries it: an absolute path, or the text itself.
 
-    A dict is sent as JSON text (the plugin reads YAML and JSON); a string is a path inside the
-    node's allowed_dirs unless it holds a line break or starts with '{' (then it is the mapping).
+    A dict is sent as JSON text (the plugin reads YAML and JSON); a string is a path (made
+    absolute against the working directory, as every path argument is) unless it holds a line
+    break or starts with '{' (then it is the mapping).
     """
     if isinstance(mapping, Mapping):
         return json.dumps(mapping)
-    return os.fspath(mapping)
+    return absolute(os.fspath(mapping))
 
 
 class PlannerBridge:
@@ -34,9 +37,10 @@ class PlannerBridge:
         """A PDDL problem of this reference's state (QUERY PDDL PROBLEM).
 
         Args:
-            mapping: a mapping file on the node's machine (inside its allowed_dirs), its YAML
-                or JSON text, or a dict: which classes become types and predicates, which
-                properties predicates and fluents, and the goal (docs/pddl.md).
+            mapping: a mapping file (a relative path is the caller's; the node reads it inside
+                its allowed_dirs), its YAML or JSON text, or a dict: which classes become types
+                and predicates, which properties predicates and fluents, and the goal
+                (docs/pddl.md).
 
         Returns:
             The problem's text; the same state gives the same bytes.
@@ -50,7 +54,7 @@ class PlannerBridge:
 
         Args:
             mapping: as for pddl_problem.
-            path: where, inside the node's allowed_dirs.
+            path: where (a relative path is the caller's), inside the node's allowed_dirs.
         """
-        return self._execute(('SAVE', 'PDDL', 'PROBLEM'), [mapping_argument(mapping), path],
-                             lambda response: None)
+        arguments = [mapping_argument(mapping), absolute(path)]
+        return self._execute(('SAVE', 'PDDL', 'PROBLEM'), arguments, lambda response: None)

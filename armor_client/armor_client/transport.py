@@ -11,7 +11,9 @@ import threading
 import time
 from typing import Any, Optional, Sequence, Set
 
+from armor_client import commands
 from armor_client.errors import ArmorCallTimeout, ArmorServiceCallError
+from armor_client.paths import absolute_args
 from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
@@ -23,11 +25,17 @@ _node_numbers = itertools.count()
 
 
 def directive(client: str, reference: str, command: str, primary: str = '',
-              secondary: str = '', args: Sequence[str] = ()) -> ArmorDirectiveReq:
-    """Build an ArmorDirectiveReq; every argument is sent as a string."""
+              secondary: str = '', args: Sequence[str] = (),
+              cwd: Optional[str] = None) -> ArmorDirectiveReq:
+    """Build an ArmorDirectiveReq; every argument is sent as a string.
+
+    Path arguments (LOAD FILE's, SAVE's, ...: the catalogue says which) are made absolute
+    against ``cwd``, by default this process's working directory (armor_client.paths).
+    """
+    texts = absolute_args(commands.find(command, primary, secondary), [str(a) for a in args], cwd)
     return ArmorDirectiveReq(client_name=client, reference_name=reference, command=command,
                              primary_command_spec=primary, secondary_command_spec=secondary,
-                             args=[str(a) for a in args])
+                             args=texts)
 
 
 class ArmorTransport:

@@ -40,3 +40,41 @@ def test_tables_align_columns_and_count_rows():
     print_table(['who', 'level'], [['alice', 80], ['bob', None], ['carol', True]], out)
     assert out.getvalue().splitlines() == [
         'who    level', '-----  -----', 'alice  80', 'bob', 'carol  true', '(3 rows)']
+
+
+@pytest.mark.parametrize('typed, sent', [
+    # Issue 35 item 3: a misspelt spec is no argument of a shorter command.
+    ('QUERY IND CLAS Room', (('QUERY', 'IND', 'CLAS'), ['Room'])),
+    ('query ind clas Room', (('query', 'ind', 'clas'), ['Room'])),
+    ('QUERRY IND CLASS Room', (('QUERRY', 'IND', 'CLASS'), ['Room'])),
+    ('REPLACE DATAPRP IND batteryLevel robot1 INTEGER 75 80',
+     (('REPLACE', 'DATAPRP', 'IND'), ['batteryLevel', 'robot1', 'INTEGER', '75', '80'])),
+    ('QUERY IND CLAS -- Room', (('QUERY', 'IND', 'CLAS'), ['Room'])),
+])
+def test_a_misspelt_spec_is_sent_as_typed_so_that_the_node_names_the_closest(typed, sent):
+    from armor_client import commands
+    assert commands.split_directive(typed.split())[0] is None
+    assert commands.as_typed(typed.split()) == sent
+
+
+@pytest.mark.parametrize('typed, words, arguments', [
+    ('QUERY IND robot1', ('QUERY', 'IND', ''), ['robot1']),
+    ('QUERY IND C1', ('QUERY', 'IND', ''), ['C1']),          # an individual named like a spec
+    ('QUERY IND CLAS', ('QUERY', 'IND', ''), ['CLAS']),      # one argument: it may be a name
+    ('QUERY IND CLASS Room', ('QUERY', 'IND', 'CLASS'), ['Room']),
+])
+def test_arguments_that_fit_the_command_stay_arguments(typed, words, arguments):
+    from armor_client import commands
+    command, split = commands.split_directive(typed.split())
+    assert (command.words, split) == (words, arguments)
+
+
+@pytest.mark.parametrize('words, trailing, sent', [
+    (['IND', 'CLASS', 'OccupiedRoom'], [], (('QUERY', 'IND', 'CLASS'), ['OccupiedRoom'])),
+    (['QUERY', 'IND', 'CLASS'], ['OccupiedRoom'], (('QUERY', 'IND', 'CLASS'), ['OccupiedRoom'])),
+    (['IND', 'CLAS', 'Room'], [], (('QUERY', 'IND', 'CLAS'), ['Room'])),
+    (['ADD', 'IND', 'CLASS'], ['r', 'Robot'], (('ADD', 'IND', 'CLASS'), ['r', 'Robot'])),
+])
+def test_query_and_watch_read_a_query_alike(words, trailing, sent):
+    from armor_client.cli.common import query_words
+    assert query_words(words, trailing) == sent

@@ -56,6 +56,12 @@ class Command:
         return ' '.join(word for word in self.words if word)
 
     @property
+    def path_positions(self) -> Tuple[int, ...]:
+        """Which arguments name a file on the node's machine: those named with the word path."""
+        return tuple(i for i, name in enumerate(self.required + self.optional)
+                     if 'path' in name.split())
+
+    @property
     def args(self) -> Tuple[str, ...]:
         """Argument names as a usage line shows them: ``ind``, ``[path]``, ``...``."""
         shown = [name.replace(' ', '_') for name in self.required]

@@ -8,9 +8,11 @@
 // Against the node in NAMESPACE, with REFERENCE loaded from robotics.owl: after a warm-up,
 // CALLS round trips of each kind (a query; a change; an atomic list of 10 changes, the
 // changes moving robot1 back and forth, so that every call finds the same ontology); prints
-// one line per kind, `kind s1 s2 ...` in seconds. Leaves the ontology as it found it.
+// one line per kind, `kind s1 s2 ...` in seconds. Leaves the ontology as it found it. Every
+// answer is checked (the rooms; where robot1 is after the changes): a wrong one exits with 1.
 #include <chrono>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,16 @@ std::vector<double> timed(int calls, Call && call)
       .count());
   }
   return seconds;
+}
+
+// Stops the run when an answer is not the one its figure assumes.
+void expect(
+  const std::vector<std::string> & answer, const std::vector<std::string> & right,
+  const std::string & what)
+{
+  if (answer != right) {
+    throw std::runtime_error("wrong answer to " + what);
+  }
 }
 
 void print(const std::string & kind, const std::vector<double> & seconds)
@@ -56,16 +68,18 @@ int main(int argc, char ** argv)
   try {
     armor::Armor armor("bench_cpp", options);
     armor::Reference ref = armor.reference(argv[2]);
+    const std::vector<std::string> all_rooms = {"bedroom", "kitchen"};
     for (int i = 0; i < 20; ++i) {
       ref.instances("Room");
     }
-    print("query", timed(calls, [&](int) {ref.instances("Room");}));
+    print("query", timed(calls, [&](int) {expect(ref.instances("Room"), all_rooms, "a query");}));
     // Changes that undo each other (robot1 moves between kitchen and bedroom), so the
     // ontology, and with it the reasoner's work, is the same for every call and client.
     const char * rooms[] = {"kitchen", "bedroom"};
     print("manipulation", timed(calls, [&](int i) {
         ref.replace_object_value("isIn", "robot1", rooms[(i + 1) % 2], rooms[i % 2]);
       }));
+    expect(ref.object_values("isIn", "robot1"), {rooms[calls % 2]}, "where robot1 went");
     if (calls % 2) {  // back to the kitchen before the lists, which start from there
       ref.replace_object_value("isIn", "robot1", "kitchen", "bedroom");
     }
@@ -76,7 +90,8 @@ int main(int argc, char ** argv)
         }
         batch.send();
       }));
-  } catch (const armor::Error & error) {
+    expect(ref.object_values("isIn", "robot1"), {"kitchen"}, "where the lists left robot1");
+  } catch (const std::runtime_error & error) {  // armor::Error, or a wrong answer
     std::cerr << "armor_cpp_round_trips: " << error.what() << "\n";
     return 1;
   }

@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <filesystem>
 #include <regex>
 #include <string>
 #include <utility>
@@ -20,6 +21,16 @@ using armor_msgs::msg::ArmorDirectiveRes;
 std::string word(std::string_view text) {return std::string(text);}
 
 std::string flag(bool value) {return value ? "true" : "false";}
+
+// A path argument as it is sent (docs/commands.md#paths): a relative one is the caller's, so
+// it is joined to this process's working directory; the node refuses relative paths.
+std::string node_path(const std::string & path)
+{
+  if (path.empty() || std::filesystem::path(path).is_absolute()) {
+    return path;
+  }
+  return (std::filesystem::current_path() / path).string();
+}
 
 // The arguments of CREATE, which are also the last four of LOAD FILE and LOAD WEB.
 std::vector<std::string> reasoning_args(const std::string & iri, const ReasonerOptions & options)
@@ -131,7 +142,7 @@ Reference Armor::load_file(
   Reference loaded = reference(name);
   loaded.consistent_from(execute(name,
     options.mount ? contract::LOAD_FILE_MOUNTED : contract::LOAD_FILE,
-    load_args(path, iri, options)));
+    load_args(node_path(path), iri, options)));
   return loaded;
 }
 
@@ -203,7 +214,7 @@ void Armor::log_to_screen(bool on) const
 void Armor::log_to_file(const std::optional<std::string> & path) const
 {
   if (path) {
-    execute("", contract::LOG_FILE_ON, {*path});
+    execute("", contract::LOG_FILE_ON, {node_path(*path)});
   } else {
     execute("", contract::LOG_FILE_OFF, {});
   }
@@ -426,9 +437,9 @@ void Reference::save(const std::string & path, const std::string & format, bool 
 {
   std::vector<std::string> args;
   if (!format.empty()) {
-    args = {path, format};
+    args = {node_path(path), format};
   } else if (!path.empty()) {
-    args = {path};
+    args = {node_path(path)};
   }
   answer(inferences ? contract::SAVE_INFERENCE : contract::SAVE, args);
 }

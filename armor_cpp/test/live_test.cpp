@@ -9,7 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <optional>
@@ -20,6 +22,7 @@
 
 #include "armor_cpp/armor.hpp"
 #include "armor_cpp/rcl_transport.hpp"
+#include "armor_cpp/scenes.hpp"
 
 namespace
 {
@@ -228,6 +231,31 @@ TEST_F(LiveReference, SavesToAFileTheNodeWrites)
   EXPECT_NE(text.str().find("bob"), std::string::npos);
 }
 
+// Issue 35 item 1: a relative path is this process's, not the node's (whose working
+// directory is ARMOR_TEST_SCRATCH itself): the client sends it made absolute.
+TEST_F(LiveReference, RelativePathsAreTheCallers)
+{
+  const std::filesystem::path folder =
+    std::filesystem::path(environment("ARMOR_TEST_SCRATCH")) / "cpp_caller";
+  std::filesystem::create_directories(folder);
+  std::filesystem::copy_file(environment("ARMOR_TEST_ONTOLOGY"), folder / "relative.owl",
+    std::filesystem::copy_options::overwrite_existing);
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(folder);
+  try {
+    armor::Reference relative = armor_.load_file(name_ + "_relative", "relative.owl");
+    relative.save("cpp_relative.ttl", "turtle");
+    relative.drop();
+  } catch (...) {
+    std::filesystem::current_path(before);
+    throw;
+  }
+  std::filesystem::current_path(before);
+  EXPECT_TRUE(std::filesystem::exists(folder / "cpp_relative.ttl"));
+  EXPECT_FALSE(std::filesystem::exists(
+      std::filesystem::path(environment("ARMOR_TEST_SCRATCH")) / "cpp_relative.ttl"));
+}
+
 TEST(Session, UtilitiesAndRawCalls)
 {
   armor::Armor armor = session("cpp_test");
@@ -284,6 +312,35 @@ TEST(Session, CallsFromSeveralThreadsAreAnsweredEachItsOwn)
   for (std::size_t i = 0; i < answers.size(); ++i) {
     EXPECT_EQ(answers[i], i % 2 ? (Names{"bedroom", "kitchen"}) : (Names{"robot1"}));
   }
+}
+
+// The scene plugin (docs/scenes.md) through learn_scene: learned, then recognised with 1.0;
+// a bad element is an ArgumentError that leaves no class behind.
+TEST(Scenes, ASceneIsLearnedThenRecognised)
+{
+  armor::Armor armor = session("cpp_scenes");
+  const std::string name = "cpp_scenes";
+  Names loaded = armor.references();
+  if (std::find(loaded.begin(), loaded.end(), name) != loaded.end()) {
+    armor.reference(name).drop();
+  }
+  armor::Reference table = armor.create(name, "http://www.emarolab.it/sit/simple");
+  std::vector<armor::SceneElement> scene{{"SPHERE", {0, 0, 0}}, {"CONE", {-0.8, -0.8, 0, 0, 0, 1}}};
+  armor::SceneAnswer learned = armor::learn_scene(table, scene, 0.9);
+  EXPECT_EQ(learned.learned_scene_name, "SCENE-1");
+  EXPECT_TRUE(learned.recognitions.empty());
+  armor::SceneAnswer again = armor::learn_scene(table, scene, 0.9);
+  EXPECT_EQ(again.learned_scene_name, "");
+  ASSERT_EQ(again.recognitions.size(), 1u);
+  EXPECT_EQ(again.recognitions[0].class_name, "SCENE-1");
+  EXPECT_DOUBLE_EQ(again.recognitions[0].similarity, 1.0);
+  EXPECT_THROW(
+    armor::learn_scene(table, {{"CUBE", {0, 0, 0}}, {"SPHERE", {1, 1, 1}}}, 0.9), armor::ArgumentError);
+  EXPECT_THROW(
+    armor::learn_scene(table, {{"SPHERE", {0, std::nan(""), 0}}, {"SPHERE", {1, 1, 1}}}, 0.9),
+    armor::ArgumentError);
+  EXPECT_EQ(table.subclasses("SCENE"), Names{"SCENE-1"});
+  table.drop();
 }
 
 }  // namespace

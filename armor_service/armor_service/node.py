@@ -8,6 +8,7 @@ through, e.g. ``armor serve --ros-args -p default_reasoner:=PELLET -r __ns:=/rob
 
 import concurrent.futures
 import difflib
+import json
 import os
 import sys
 
@@ -19,6 +20,7 @@ from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service import wire
 from armor_service.core_process import CoreProcess, CoreUnavailable
 from armor_service.extensions import load_extensions
+from armor_service.installation import code_dirs
 from armor_service.parameters import all_parameters, core_settings, Parameter
 from armor_service.subscriptions import SubscriptionTopics
 import rclpy
@@ -38,6 +40,8 @@ class ArmorService(Node):
         self._declare_parameters()
         settings = core_settings(self._value, self.get_logger().warning)
         settings['state_dir'] = settings['state_dir'] or self._default_state_dir()
+        # Whatever protected_dirs says, no directive writes into the code the node runs.
+        settings['protected_dirs'] = [*settings['protected_dirs'], *code_dirs()]
         self._core = CoreProcess(
             self._core_jar(), settings, jvm_options=tuple(self._value('jvm_options')),
             start_timeout_s=self._value('core_start_timeout_s'), logger=self.get_logger(),
@@ -49,8 +53,9 @@ class ArmorService(Node):
         # Before the core starts: the preload's LOAD is a change too.
         self._change_publisher = self.create_publisher(ArmorChange, CHANGE_TOPIC, CHANGE_QOS)
         self._core.add_event_listener(self.on_core_event)
-        self._answer_topics = SubscriptionTopics(self, self._core, group,
-                                                 lambda: self._value('subscription_idle_s'))
+        self._answer_topics = SubscriptionTopics(
+            self, self._core, group, lambda: self._value('subscription_idle_s'),
+            lambda: self._value('subscriptions_per_client'))
         self._core.start()
         self.create_service(ArmorDirective, DIRECTIVE_SERVICE, self.directive_callback,
                             qos_profile=SERVICE_QOS, callback_group=group)
@@ -78,6 +83,7 @@ class ArmorService(Node):
             response.armor_response = wire.error_response(ExitCode.TOO_LARGE, str(error))
         except concurrent.futures.TimeoutError:
             response.armor_response = self._timed_out()
+        self._answered([request.armor_request])
         return response
 
     def directive_list_callback(self, request, response):
@@ -100,7 +106,13 @@ class ArmorService(Node):
         except concurrent.futures.TimeoutError:
             response.success = False
             response.armor_responses = [self._timed_out() for _ in directives]
+        self._answered(request.armor_requests)
         return response
+
+    def _answered(self, requests) -> None:
+        """Tell the web view: its list of recent directives follows them all, not changes only."""
+        if self._web_view is not None:
+            self._web_view.directives_answered([r.reference_name for r in requests])
 
     def on_core_event(self, event: dict) -> None:
         """Publish what the core announces (on its event thread, in the core's order)."""
@@ -151,12 +163,32 @@ class ArmorService(Node):
         self._preload(send)
         self._answer_topics.register_again(send)
 
+    def _state_damage(self, send) -> list:
+        """What the core's state directory could not restore or cannot keep (GET STATE DAMAGE)."""
+        query = {'client_name': 'armor_service', 'reference_name': '', 'command': 'GET',
+                 'primary_command_spec': 'STATE', 'secondary_command_spec': 'DAMAGE', 'args': []}
+        answer = send({'op': 'directive', 'directive': query})['response']
+        damage = [json.loads(line) for line in answer['queried_objects']]
+        for entry in damage:
+            self.get_logger().error(f'state damage: {json.dumps(entry)}')
+        return damage
+
     def _preload(self, send) -> None:
         """Load the preload file into a new core, before it takes any request."""
+        damage = self._state_damage(send)
         path = self._value('preload_file')
         if not path:
             return
         name = self._value('preload_reference')
+        lost = [d for d in damage if d.get('reference') == name and d.get('restored') is False]
+        if lost:
+            # Loading the file over it would hide the loss: the robot's changes would seem gone for no reason.
+            self.get_logger().error(
+                f'reference "{name}" could not be restored from the state directory '
+                f'({"; ".join(lost[-1].get("problems", []))}); NOT preloading {path} over it. Its files '
+                f'are in {lost[-1].get("kept_in")}. To start from {path} anyway, move that folder '
+                'away (keep it to recover by hand) and restart, or start with -p restore_state:=false')
+            return
         listing = {'client_name': 'armor_service', 'reference_name': '', 'command': 'GET',
                    'primary_command_spec': 'ALL', 'secondary_command_spec': 'REFS', 'args': []}
         answer = send({'op': 'directive', 'directive': listing})['response']
@@ -231,11 +263,14 @@ class ArmorService(Node):
                                f'got {value!r}')
 
 
-def main(args=None):
+def main(args=None, on_ready=None):
+    """Serve until interrupted; on_ready(node) is called once the node serves."""
     rclpy.init(args=args)
     node = None
     try:
         node = ArmorService()
+        if on_ready is not None:
+            on_ready(node)
         executor = MultiThreadedExecutor(num_threads=node.get_parameter('executor_threads').value)
         executor.add_node(node)
         executor.spin()

@@ -87,17 +87,25 @@ class Parameter:
 _NODE_DEFAULTS: Dict[str, Tuple[Callable[[], Any], str]] = {
     'allowed_dirs': (lambda: [os.getcwd(), os.path.expanduser('~'), tempfile.gettempdir()],
                      'working dir, home, temp dir'),
+    # One folder of ARMOR's own, made 0700 at start: nothing a client writes lands among the
+    # user's files, code or dotfiles unless the operator says where (docs/security.md).
+    'write_dirs': (lambda: [os.path.join(os.path.expanduser('~'), 'armor_files')],
+                   '`~/armor_files` (made 0700 at start)'),
+    'protected_dirs': (lambda: [], '(none; the installation always is)'),
     'state_dir': (lambda: '', '`$XDG_DATA_HOME/armor_ros2/domain<ID>/<node name>`'),
-    # The plugins make setup installed (the PDDL bridge): install/setup.bash exports them.
-    'plugin_dirs': (lambda: path_list(os.environ.get('ARMOR_PLUGIN_DIRS', '')),
-                    '`$ARMOR_PLUGIN_DIRS` (the installed plugins)'),
+    # The user's own: the installed plugins come with installed_plugins, whatever is set here.
+    'plugin_dirs': (lambda: [], None),
 }
 _NODE_DESCRIPTIONS = {
     'allowed_dirs': ' (a string array, one path, or paths joined by ":")',
+    'write_dirs': ' (a string array, one path, or paths joined by ":")',
+    'protected_dirs': ' (a string array, one path, or paths joined by ":")',
     'state_dir': ' (empty: the default directory)',
-    'plugin_dirs': ' (a string array, one path, or paths joined by ":")',
+    'plugin_dirs': ' (a string array, one path, or paths joined by ":"), loaded besides the '
+                   'installed plugins (installed_plugins)',
 }
-_ALSO_STRING = {'allowed_dirs': path_list, 'plugin_dirs': path_list}
+_ALSO_STRING = {'allowed_dirs': path_list, 'write_dirs': path_list, 'protected_dirs': path_list,
+                'plugin_dirs': path_list}
 # Parameters of earlier releases still accepted: name -> (the parameter whose list it joins).
 DEPRECATED_ALIASES = {'plugin_dir': 'plugin_dirs'}
 
@@ -137,17 +145,34 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
               'its changes wait for APPLY'),
     Parameter('preload_buffered_reasoner', 'boolean', False,
               'its reasoner sees changes only at REASON'),
-    Parameter('extensions', 'string_array', [],
+    Parameter('extensions', 'string_array', ['sit'],
               'Python extensions to load (entry points of group armor_service.extensions; '
-              'a string array or names separated by commas)', also_string=name_list),
+              'a string array or names separated by commas); sit is the scene service '
+              '(docs/scenes.md): name it too when you set this', also_string=name_list),
+    Parameter('installed_plugins', 'boolean', True,
+              'also load the plugins make setup installed (`$ARMOR_PLUGIN_DIRS`: the PDDL '
+              'bridge), whatever plugin_dirs says'),
     Parameter('plugin_dir', 'string', '',
               'deprecated since 0.3.0: one directory, added to plugin_dirs'),
     Parameter('subscription_idle_s', 'double', 5.0,
               "a subscription whose topic has had no subscriber this long ends (its client "
               "went away)", read_only=False),
+    # Each live subscription costs the node a publisher and the core a query after every change
+    # of its reference: one client's flood must not slow every other (docs/security.md).
+    Parameter('subscriptions_per_client', 'integer', 100,
+              'most live subscriptions one client_name may hold; then 226 (0 = no limit)',
+              read_only=False),
     Parameter('web_port', 'integer', 0,
               'TCP port of the live, read-only web view of every reference (0 = off; make run '
               'uses 8080; docs/web-view.md)'),
+    # The scene service's relation thresholds (sit extension, docs/scenes.md); each request's
+    # directive carries the values it was answered with, so a restart replays it exactly.
+    Parameter('sit_position_threshold', 'double', 0.03,
+              'scene service: metres two centres must differ by to be right/behind/above, and '
+              'within which they lie along an axis', read_only=False),
+    Parameter('sit_axis_threshold', 'double', 0.05,
+              'scene service: how nearly two axes must be parallel or perpendicular, and the '
+              'squared distance within which a centre is on an axis', read_only=False),
     Parameter('web_host', 'string', '127.0.0.1',
               'address the web view listens on; any but a loopback address lets every machine '
               'that reaches it read every reference (docs/web-view.md)'),
@@ -175,4 +200,9 @@ def core_settings(value: Callable[[str], Any], warn: Callable[[str], None]) -> D
         if given:
             warn(f'parameter {alias} is deprecated: use {target} (a list); {given} is added to it')
             settings[target] = [*settings[target], *path_list(given)]
+    if value('installed_plugins'):
+        # Setting plugin_dirs to add a plugin must not drop the planner bridge unnoticed.
+        installed = path_list(os.environ.get('ARMOR_PLUGIN_DIRS', ''))
+        settings['plugin_dirs'] = [*installed, *(directory for directory in settings['plugin_dirs']
+                                                 if directory not in installed)]
     return settings

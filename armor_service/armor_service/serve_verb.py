@@ -19,5 +19,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args) -> int:
     from armor_service.node import main as serve_main
-    serve_main(args=['armor_service', *args.directive_args])
+    serve_main(args=['armor_service', *args.directive_args], on_ready=_prepare_call_relay)
     return 0
+
+
+def _prepare_call_relay(node) -> None:
+    """Have armor call's relay discover this node now, so that the first call is quick too."""
+    try:
+        from armor_client.cli import call_relay
+    except ImportError:  # the armor command comes with armor_client; a launch file may not
+        return
+    if call_relay.enabled():
+        namespace = node.get_namespace()
+        call_relay.prepare('' if namespace == '/' else namespace)  # as armor call names it

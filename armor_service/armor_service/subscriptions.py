@@ -58,14 +58,20 @@ class SubscriptionTopics:
         core: its core process.
         callback_group: the group of the node's service callbacks.
         idle_s: a function giving subscription_idle_s (it may change while the node runs).
+        per_client: a function giving subscriptions_per_client (likewise).
     """
 
-    def __init__(self, node, core: CoreProcess, callback_group, idle_s: Callable[[], float]):
+    def __init__(self, node, core: CoreProcess, callback_group, idle_s: Callable[[], float],
+                 per_client: Callable[[], int]):
         self._node = node
         self._core = core
         self._idle_s = idle_s
+        self._per_client = per_client
         self._lock = threading.Lock()
+        self._sweeping = threading.Lock()
         self._subscriptions: Dict[str, _Subscription] = {}
+        # Subscriptions being made, by client: counted against the client's share meanwhile.
+        self._being_made: Dict[str, int] = {}
         # Ids unique to this node process: a client of an earlier node never mistakes a new
         # subscription's topic for its own.
         self._token = secrets.token_hex(3)
@@ -86,8 +92,30 @@ class SubscriptionTopics:
         return len(self._subscriptions)
 
     def subscribe_callback(self, request, response):
-        subscription_id = f's{self._token}_{next(self._numbers)}'
         directive = wire.directive_to_json(request.armor_request)
+        client = directive['client_name']
+        limit = self._per_client()
+        with self._lock:
+            held = self._being_made.get(client, 0) + sum(
+                1 for s in self._subscriptions.values() if s.directive['client_name'] == client)
+            if 0 < limit <= held:
+                response.success = False
+                response.exit_code = ExitCode.CLIENT_LIMIT
+                response.error_description = (
+                    f'client {client!r} holds {held} live subscriptions, the most one client may '
+                    '(node parameter subscriptions_per_client); unsubscribe one first')
+                return response
+            self._being_made[client] = self._being_made.get(client, 0) + 1
+        try:
+            return self._subscribe(directive, response)
+        finally:
+            with self._lock:
+                self._being_made[client] -= 1
+                if not self._being_made[client]:
+                    del self._being_made[client]
+
+    def _subscribe(self, directive: Dict[str, Any], response):
+        subscription_id = f's{self._token}_{next(self._numbers)}'
         topic = self._topic()
         publisher = self._node.create_publisher(ArmorAnswer, topic, ANSWER_QOS,
                                                 event_callbacks=_NO_EVENT_HANDLERS)
@@ -169,6 +197,16 @@ class SubscriptionTopics:
 
         Also frees the topics of ended subscriptions that nobody subscribes to any more.
         """
+        # One sweep at a time: a sweep that ends many subscriptions outlasts the timer's period,
+        # and a second one would touch the publishers the first destroyed (the node died of it).
+        if not self._sweeping.acquire(blocking=False):
+            return
+        try:
+            self._sweep()
+        finally:
+            self._sweeping.release()
+
+    def _sweep(self) -> None:
         now = time.monotonic()
         idle_s = self._idle_s()
         with self._lock:
@@ -179,6 +217,8 @@ class SubscriptionTopics:
             self._draining_topics = [t for t in self._draining_topics if t not in free]
             self._free_topics.extend(free)
         for subscription in subscriptions:
+            if subscription.id not in self._subscriptions:
+                continue  # ended meanwhile (unsubscribed): its publisher is gone
             if subscription.publisher.get_subscription_count() > 0:
                 subscription.without_subscriber_since = now
             elif now - subscription.without_subscriber_since > idle_s:

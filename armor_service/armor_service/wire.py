@@ -15,8 +15,8 @@ from armor_msgs.msg import (ArmorAnswer, ArmorChange, ArmorDirectiveReq, ArmorDi
 from builtin_interfaces.msg import Time
 
 _HEADER = struct.Struct('>I')
-# The largest frame either side reads; the core's own size limits (SizeLimits.java) are far
-# below it, so only a request far beyond them meets this one.
+# The largest frame either side reads (SizeLimits.FRAME_BYTES in the core, which answers 221 for
+# an answer or a list's answers that would not fit): a larger one means a broken connection.
 MAX_FRAME_BYTES = 256 << 20
 
 _REQUEST_FIELDS = ('client_name', 'reference_name', 'command', 'primary_command_spec',

@@ -96,7 +96,8 @@ def iris(*names: str) -> list:
 def start_node(scratch: pathlib.Path, *ros_args: str, namespace: str = '', **process):
     """A node preloading robotics.owl as "robotics", reading and writing in scratch only.
 
-    Its state directory is scratch/state, so it restores nothing but its own earlier state.
+    Its state directory is scratch/state, so it restores nothing but its own earlier state; its
+    working directory is scratch/cwd (no file directly in a working directory is ever written).
     A node started beside the session's node needs a namespace of its own: two nodes serving
     one service name would both receive every request. ``process``: command_prefix and env of
     ArmorNodeProcess (a node on another host, with its own DDS settings).
@@ -107,10 +108,15 @@ def start_node(scratch: pathlib.Path, *ros_args: str, namespace: str = '', **pro
     node = ArmorNodeProcess(scratch / 'armor_service.log', [
         '-p', f'preload_file:={ONTOLOGIES / "robotics.owl"}', '-p', 'preload_reference:=robotics',
         '-p', f'allowed_dirs:=["{ONTOLOGIES}", "{TEST_ONTOLOGIES}", "{scratch}"]',
-        '-p', f'state_dir:={scratch / "state"}', *ros_args],
-        cwd=scratch, **process)
+        '-p', f'write_dirs:={scratch}', '-p', f'state_dir:={scratch / "state"}', *ros_args],
+        cwd=_made(scratch / 'cwd'), **process)
     node.scratch = scratch
     return node
+
+
+def _made(folder: pathlib.Path) -> pathlib.Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    return folder
 
 
 @pytest.fixture(scope='session')

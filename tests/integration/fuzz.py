@@ -1,15 +1,20 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-"""Random and malformed directives over ROS 2: the node must answer every one with a defined code.
+"""Grammar-aware fuzzing over ROS 2: every directive answered with a defined code, none lost.
 
-    python tests/integration/fuzz.py --directives 100000
+    python tests/integration/fuzz.py --directives 1000000
 
-Directives are drawn from ARMOR's vocabulary, mangled (case, arity, unicode, huge strings,
-IRIs, Manchester and SPARQL garbage) and sent to a reference loaded from robotics.owl. Every
-directive that succeeds there is replayed on a shadow copy; at the end both are saved and must
-hold the same axioms, so a rejected directive that changed anything shows up as a difference.
+Directives are built from the core's catalogue (every command, its argument names): valid ones
+(names of the ontology, values of the right type), almost valid ones (one thing wrong: an
+argument more or less, a value of the wrong type, a misspelt word, an unknown name) and hostile
+ones (huge or control-character strings, unicode, path traversal, shell and SPARQL injection,
+IRIs holding < or >). They go to a reference loaded from robotics.owl; after every rejected
+directive its state (GET REF DIGEST, revision, mount holder) must be what it was. Every
+directive acknowledged there is replayed on a shadow copy; at the end both are saved and must
+hold the same axioms. Commands acting on whole references go to a sacrificial one.
 """
 
 import argparse
+import json
 import pathlib
 import random
 import sys
@@ -20,91 +25,159 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 
 from conftest import ONTOLOGIES, start_node  # noqa: E402
 
-DEFINED_CODES = {0, 101, 102, 201, 202, 203, 205} | set(range(206, 221))
-COMMANDS = ['ADD', 'REMOVE', 'REPLACE', 'QUERY', 'DISJOINT', 'MAKE', 'RENAME', 'REASON', 'APPLY',
-            'GET', 'LOG', 'SAVE', 'DROP', 'MOUNT', 'UNMOUNT', 'LOAD', 'CREATE', 'FLY', '']
-SPECS = ['IND', 'CLASS', 'DATAPROP', 'OBJECTPROP', 'SPARQL', 'FORMATTED', 'AXIOM', 'SWRL', 'DL',
-         'CARDINALITY', 'MIN', 'EQUIVALENT', 'DISJOINT', 'SAME', 'INVERSE', 'CHARACTERISTIC',
-         'DOMAIN', 'RANGE', 'SUPER', 'RESTRICTIONS', 'CONSISTENCY', 'ALL', 'REFS', 'REF', 'CLIENT',
-         'FILE', 'WEB', 'MOUNTED', 'INFERENCE', 'SCREEN', 'ON', 'OFF', '-', '', 'XYZZY']
-# Commands that act on references as wholes go to a sacrificial reference only, so that the
-# compared reference changes through manipulations alone.
-WHOLE_REFERENCE = {'DROP', 'MOUNT', 'UNMOUNT', 'LOAD', 'CREATE', 'SAVE', 'LOG'}
-NAMES = ['robot1', 'kitchen', 'bedroom', 'alice', 'Robot', 'Room', 'Agent', 'isIn', 'contains',
-         'batteryLevel', 'visitedAt', 'newThing', 'Location', 'OccupiedRoom', 'corridor1']
-TYPES = ['INT', 'INTEGER', 'FLOAT', 'LONG', 'DOUBLE', 'BOOL', 'BOOLEAN', 'STRING', 'xsd:dateTime',
-         'xsd:nonsense', 'COLOUR', '']
-GARBAGE = [
-    '', ' ', '-1', '0', '3.14', '1e999', 'NaN', 'true', 'yes', '99999999999999999999999',
-    '<http://www.example.org/robotics#robot1>', 'http://www.example.org/robotics#Room',
-    '<not an iri>', '<http://unbalanced', 'ex:Foo', ':::', 'owl:Thing', 'owl:Nothing',
-    'Robot and and', 'isIn some (', 'not not not', 'Room SubClassOf isIn exactly 1 Location',
-    'SubClassOf(:A :B)', 'ClassAssertion(', 'Robot(?r) -> Room(?r)', 'Robot(?r), -> ',
-    'SELECT ?x WHERE { ?x a :Robot }', 'SELECT * WHERE {', 'ASK { :kitchen a :Room }',
-    'DROP ALL', 'ünïcødé', '机器人', '🤖', '\u0000', 'a\nb', '\\', '"quoted"', "'", '%s%n',
-    '../../etc/passwd', '/etc/passwd', 'x' * 100_000,
+WHOLE_REFERENCE_KINDS = {'creating', 'dropping', 'mounting', 'reference', 'global'}
+NS = 'http://www.example.org/robotics#'
+INDIVIDUALS = ['robot1', 'kitchen', 'bedroom', 'alice', 'corridor1']
+CLASSES = ['Robot', 'Room', 'Agent', 'Location', 'OccupiedRoom', 'Person', 'Corridor']
+OBJECT_PROPS = ['isIn', 'contains', 'connectedTo']
+DATA_PROPS = ['batteryLevel', 'visitedAt']
+TYPES = ['INT', 'INTEGER', 'FLOAT', 'LONG', 'DOUBLE', 'BOOL', 'BOOLEAN', 'STRING',
+         'xsd:dateTime', 'DECIMAL']
+HOSTILE = [
+    '', ' ', '\u0000', 'a\nb', '\r\n', '\t', '\x1b[31m', '\\', '"', "'", '%s%n', '{}', '[]',
+    'x' * 100_000, 'é' * 5000, '机器人', '🤖', '\ud7ff', '﻿', '../../etc/passwd', '/etc/passwd',
+    '~/.bashrc', '$(touch /tmp/armor-fuzz-pwned)', '`id`', '; rm -rf /', '<http://x/a>b>',
+    '<http://x/a<b>', 'http://x/a>b', '<not an iri>', '<http://unbalanced', 'ex:Foo', ':::',
+    'owl:Thing', 'owl:Nothing', '_:b0', 'Robot and and', 'isIn some (', 'not not not',
+    'Room SubClassOf isIn exactly 1 Location', 'SubClassOf(:A :B)', 'ClassAssertion(',
+    'Robot(?r) -> Room(?r)', 'Robot(?r), -> ', 'SELECT ?x WHERE { ?x a :Robot }',
+    'SELECT * WHERE {', 'ASK { :kitchen a :Room }', 'DROP ALL', 'INSERT DATA { <a> <b> <c> }',
+    'SELECT * WHERE { SERVICE <http://127.0.0.1:1/> { ?s ?p ?o } }',
+    '<!DOCTYPE x [<!ENTITY e SYSTEM "file:///etc/passwd">]>', '-1', '0', '1e999', 'NaN',
+    '99999999999999999999999', '-9223372036854775809', 'true', 'yes',
 ]
 
 
-# Real combinations with their usual arity, so that many directives reach the handlers.
-VALID = {
-    'ADD IND': 1, 'ADD IND CLASS': 2, 'REMOVE IND CLASS': 2, 'ADD CLASS': 1, 'ADD CLASS CLASS': 2,
-    'REMOVE CLASS CLASS': 2, 'ADD DATAPROP IND': 4, 'REMOVE DATAPROP IND': 4,
-    'ADD OBJECTPROP IND': 3, 'REMOVE OBJECTPROP IND': 3, 'REPLACE DATAPROP IND': 5,
-    'REPLACE OBJECTPROP IND': 4, 'ADD CARDINALITY MIN': 4, 'DISJOINT IND': 2, 'DISJOINT CLASS': 2,
-    'DISJOINT IND CLASS': 1, 'DISJOINT CLASS CLASS': 1, 'MAKE EQUIVALENT CLASS': 1,
-    'REMOVE IND': 1, 'REMOVE CLASS': 1, 'RENAME IND': 2, 'RENAME CLASS': 2,
-    'ADD OBJECTPROP CHARACTERISTIC': 2, 'ADD OBJECTPROP DOMAIN': 2, 'ADD DATAPROP RANGE': 2,
-    'ADD IND SAME': 2, 'ADD CLASS EQUIVALENT': 2, 'ADD AXIOM': 1, 'REMOVE AXIOM': 1,
-    'ADD SWRL': 2, 'APPLY': 0, 'REASON': 0, 'QUERY IND': 1, 'QUERY IND CLASS': 1,
-    'QUERY IND DL': 1, 'QUERY CLASS IND': 1, 'QUERY DATAPROP IND': 2, 'QUERY OBJECTPROP IND': 2,
-    'QUERY CLASS CLASS': 1, 'QUERY CLASS SUPER': 1, 'QUERY CLASS RESTRICTIONS': 1,
-    'QUERY SPARQL': 1, 'QUERY SPARQL FORMATTED': 1, 'QUERY CONSISTENCY': 0, 'QUERY IND SAME': 1,
-    'GET ALL REFS': 0, 'DROP': 0, 'MOUNT': 0, 'UNMOUNT': 0, 'SAVE': 2,
-}
+def load_catalogue():
+    path = pathlib.Path(__file__).resolve().parents[2] / 'armor_contract' / 'armor_contract'
+    return json.loads((path / 'catalogue.json').read_text())['commands']
 
 
-def random_directive(rng: random.Random):
-    if rng.random() < 0.6:
-        key = rng.choice(sorted(VALID))
-        words = (key.split() + ['', ''])[:3]
-        arity = max(0, VALID[key] + rng.choice([0, 0, 0, 0, -1, 1]))
-        pool = [NAMES, NAMES, NAMES, TYPES, GARBAGE]
-        return words, [rng.choice(rng.choice(pool)) for _ in range(arity)]
-    command = rng.choice(COMMANDS)
-    primary = rng.choice(SPECS)
-    secondary = rng.choice(SPECS)
-    words = [command, primary, secondary]
-    if rng.random() < 0.2:
-        words = [''.join(c.upper() if rng.random() < 0.5 else c.lower() for c in w) for w in words]
-    arity = rng.choice([0, 1, 1, 2, 2, 3, 4, 5, 8])
-    pool = [NAMES, NAMES, TYPES, GARBAGE]
-    args = [rng.choice(rng.choice(pool)) for _ in range(arity)]
-    return words, args
+class Grammar:
+    """Directives from the catalogue: valid, almost valid or hostile, in that proportion."""
 
+    def __init__(self, rng: random.Random, scratch: pathlib.Path):
+        self.rng = rng
+        self.scratch = scratch
+        self.commands = [c for c in load_catalogue() if c['words'][0]]
 
-def _mutates(words):
-    return words[0].upper() in WHOLE_REFERENCE
+    def value_for(self, name: str) -> str:
+        r = self.rng
+        if name in ('ind', 'value ind', 'sub', 'super') and r.random() < 0.7:
+            return r.choice(INDIVIDUALS if name != 'sub' and name != 'super' else CLASSES)
+        if name in ('class', 'value class', 'sub', 'super'):
+            return r.choice(CLASSES)
+        if name in ('prop', 'object prop', 'inverse prop'):
+            return r.choice(OBJECT_PROPS + DATA_PROPS)
+        if name in ('type', 'datatype'):
+            return r.choice(TYPES)
+        if name in ('value', 'new value', 'old value', 'n', 'since revision'):
+            return r.choice(['0', '1', '42', '3.5', 'true', '2024-01-01T00:00:00Z', 'text'])
+        if name in ('new name', 'old name', 'rule name', 'client name'):
+            return r.choice(INDIVIDUALS + CLASSES + [f'new{r.randrange(50)}'])
+        if name == 'characteristic':
+            return r.choice(['TRANSITIVE', 'SYMMETRIC', 'FUNCTIONAL', 'REFLEXIVE', 'NONE'])
+        if name == 'class expression':
+            return r.choice(['Robot and (isIn some Room)', 'Room', 'isIn some Location',
+                             'Robot or Person', 'not Room'])
+        if name == 'query':
+            return r.choice(['SELECT ?x WHERE { ?x a <http://www.example.org/robotics#Robot> }',
+                             'ASK { ?s ?p ?o }'])
+        if name == 'axiom':
+            return r.choice([f'ClassAssertion(<{NS}Robot> <{NS}new{r.randrange(50)}>)',
+                             f'SubClassOf(<{NS}Robot> <{NS}Agent>)'])
+        if name == 'rule':
+            return 'Robot(?r) ^ isIn(?r, ?x) -> Agent(?r)'
+        if name in ('path',):
+            return str(self.scratch / r.choice(['out.owl', 'sub/out.ttl', 'robotics.owl']))
+        if name == 'format':
+            return r.choice(['', 'functional', 'turtle', 'rdfxml', 'owlxml', 'bogus'])
+        if name == 'reasoner':
+            return r.choice(['HERMIT', 'PELLET', 'ELK', 'JFACT', 'NONE'])
+        if name in ('buffered manipulation', 'buffered reasoner', 'most specific only'):
+            return r.choice(['true', 'false'])
+        if name in ('ontology IRI', 'URL'):
+            return r.choice(['', 'http://www.example.org/robotics', 'http://127.0.0.1:1/x.owl'])
+        if name == 'reference name':
+            return r.choice(['target', 'sacrificial', 'nothere'])
+        return r.choice(INDIVIDUALS)
+
+    def valid(self):
+        command = self.rng.choice(self.commands)
+        args = [self.value_for(n) for n in command['args']['required']]
+        args += [self.value_for(n) for n in command['args']['optional'] if self.rng.random() < 0.5]
+        return command, list(command['words']), args
+
+    def almost_valid(self):
+        command, words, args = self.valid()
+        r = self.rng
+        mutation = r.randrange(6)
+        if mutation == 0 and args:
+            args.pop(r.randrange(len(args)))
+        elif mutation == 1:
+            args.insert(r.randrange(len(args) + 1), self.value_for('ind'))
+        elif mutation == 2 and args:
+            args[r.randrange(len(args))] = r.choice(TYPES + ['robot9', 'Robt', '1.5.5', 'maybe'])
+        elif mutation == 3:
+            i = r.randrange(3)
+            words[i] = ''.join(c.lower() if r.random() < 0.5 else c for c in words[i])
+        elif mutation == 4:
+            i = r.randrange(3)
+            words[i] = words[i][:-1] if words[i] else 'X'
+        else:
+            args = [a + r.choice(['', ' ', '#', '>', '"']) for a in args]
+        return command, words, args
+
+    def hostile(self):
+        r = self.rng
+        if r.random() < 0.5:
+            command, words, args = self.valid()
+            args = [r.choice(HOSTILE) if r.random() < 0.6 else a for a in args]
+        else:
+            command = None
+            words = [r.choice(['ADD', 'QUERY', 'GET', 'REMOVE', '', 'X' * 300, 'ＡＤＤ', 'add\n']),
+                     r.choice(['IND', 'CLASS', '', '-', 'ALL', '\u0000']),
+                     r.choice(['CLASS', '', 'REFS', '🤖'])]
+            args = [r.choice(HOSTILE) for _ in range(r.choice([0, 1, 3, 8, 40]))]
+        return command, words, args
+
+    def next(self):
+        roll = self.rng.random()
+        if roll < 0.4:
+            return ('valid',) + self.valid()
+        if roll < 0.75:
+            return ('almost',) + self.almost_valid()
+        return ('hostile',) + self.hostile()
 
 
 class Fuzzer:
     def __init__(self, scratch: pathlib.Path, seed: int):
         from armor_client import ArmorTransport, directive
+        from armor_contract.exit_codes import ExitCode
+        self.defined_codes = {int(code) for code in ExitCode}
         self.directive = directive
         self.scratch = scratch
         self.rng = random.Random(seed)
+        self.grammar = Grammar(self.rng, scratch)
         # Random axioms can send a reasoner into exponential work: as a deployment facing
         # untrusted input would, the run bounds reasoning, so such a directive answers 211.
         self.node = start_node(scratch, '-p', 'reasoner_timeout_ms:=10000',
                                '-p', 'request_timeout_s:=120.0', namespace='/fuzz')
         self.armor = ArmorTransport(namespace='/fuzz', service_wait_s=120.0)
-        for name in ('target', 'shadow'):
+        # Buffered reasoners: a change does not wait for reasoning (REASON in the stream does it).
+        for name in ('target', 'shadow', 'sacrificial'):
             self._ok(name, 'LOAD', 'FILE', '', str(ONTOLOGIES / 'robotics.owl'),
                      'http://www.example.org/robotics', 'false', 'PELLET', 'true')
         self.codes = {}
+        self.kinds = {}
         self.undefined = []
+        self.changed_by_rejected = []
+        self.unanswered = 0
         self.slow = []
         self.sent = 0
+        self.rejected = 0
+        self.state_waits = 0
+        self.state = self.target_state()
 
     def _ok(self, reference, command, primary, secondary, *args):
         answer = self.armor.call(self.directive('fuzz-setup', reference, command, primary,
@@ -112,33 +185,82 @@ class Fuzzer:
         assert answer.success, f'{command} {primary} {secondary}: {answer.error_description}'
         return answer
 
+    def target_state(self):
+        """What a rejected directive must not change: digest, revision, mount holder."""
+        # A reasoner the time limit interrupted may hold the reference a while longer: wait it out.
+        deadline = time.monotonic() + 900
+        while True:
+            answer = self.armor.call_list([self.directive('fuzz-state', '', 'GET', 'REF', word, ['target'])
+                                           for word in ('DIGEST', 'REVISION', 'CLIENT')], timeout_s=300)
+            if answer.success or time.monotonic() > deadline:
+                break
+            self.state_waits += 1
+        assert answer.success, [r.error_description for r in answer.armor_responses]
+        return tuple(tuple(r.queried_objects) for r in answer.armor_responses)
+
+    def _call(self, request):
+        from armor_client import ArmorError
+        try:
+            return self.armor.call(request, timeout_s=300)
+        except ArmorError:
+            self.unanswered += 1
+            return None
+
     def run(self, count: int) -> None:
         for _ in range(count):
-            words, args = random_directive(self.rng)
-            reference = 'sacrificial' if _mutates(words) else self.rng.choice(
+            kind, command, words, args = self.grammar.next()
+            self.kinds[kind] = self.kinds.get(kind, 0) + 1
+            whole = command is not None and command['kind'] in WHOLE_REFERENCE_KINDS
+            reference = 'sacrificial' if whole else self.rng.choice(
                 ['target', 'target', 'target', '', 'unknown_ref'])
             request = self.directive('fuzzer', reference, *words, args)
+            started = time.monotonic()
             if self.rng.random() < 0.05:
-                extra_words, extra_args = random_directive(self.rng)
-                second = self.directive('fuzzer', 'target' if not _mutates(extra_words)
-                                        else 'sacrificial', *extra_words, extra_args)
-                answer = self.armor.call_list([request, second], timeout_s=300)
+                _, extra_command, extra_words, extra_args = self.grammar.next()
+                extra_whole = extra_command is not None and extra_command['kind'] in WHOLE_REFERENCE_KINDS
+                second = self.directive('fuzzer', 'sacrificial' if extra_whole else 'target',
+                                        *extra_words, extra_args)
+                try:
+                    answer = self.armor.call_list([request, second], timeout_s=300)
+                except Exception:  # noqa: BLE001 - counted, the run goes on
+                    self.unanswered += 1
+                    continue
                 responses = list(answer.armor_responses)
-                if answer.success:
-                    for sent in (request, second):
-                        self._shadow(sent)
+                acknowledged = answer.success
+                sent = [request, second]
             else:
-                started = time.monotonic()
-                responses = [self.armor.call(request, timeout_s=300)]
-                if time.monotonic() - started > 5:
-                    self.slow.append((round(time.monotonic() - started, 1), words, args[:4],
-                                      responses[0].exit_code))
-                if responses[0].success:
-                    self._shadow(request)
+                response = self._call(request)
+                if response is None:
+                    continue
+                responses = [response]
+                acknowledged = response.success
+                sent = [request]
+            if time.monotonic() - started > 5:
+                self.slow.append((round(time.monotonic() - started, 1), words, args[:4],
+                                  responses[0].exit_code))
             for response in responses:
                 self.codes[response.exit_code] = self.codes.get(response.exit_code, 0) + 1
-                if response.exit_code not in DEFINED_CODES:
+                if response.exit_code not in self.defined_codes:
                     self.undefined.append((words, args[:3], response.exit_code))
+                    print(f'UNDEFINED EXIT CODE {response.exit_code}: {" ".join(words)} '
+                          f'{[a[:60] for a in args[:4]]}', flush=True)
+            touches_target = any(r.reference_name == 'target' for r in sent)
+            query = command is not None and command['kind'] == 'query' and len(sent) == 1
+            if acknowledged and not query:
+                for r in sent:
+                    self._shadow(r)
+                if touches_target:
+                    self.state = self.target_state()
+            elif touches_target:
+                self.rejected += 1
+                now = self.target_state()
+                if now != self.state:
+                    self.changed_by_rejected.append((words, [a[:40] for a in args[:4]]))
+                    print(f'CHANGED BY A REJECTED DIRECTIVE: {" ".join(words)} '
+                          f'{[a[:60] for a in args[:6]]} -> {[r.exit_code for r in responses]} '
+                          f'{responses[0].error_description[:200]!r}; state {self.state} -> {now}',
+                          flush=True)
+                    self.state = now
             self.sent += 1
 
     def _shadow(self, request) -> None:
@@ -162,6 +284,15 @@ class Fuzzer:
         return self.node.process.poll() is None and self.armor.call(
             self.directive('fuzz', '', 'GET', 'ALL', 'REFS', []), timeout_s=60).success
 
+    def summary(self, elapsed_s: float, alive: bool, differences: set) -> str:
+        return (f'{self.sent} directives ({", ".join(f"{k}: {n}" for k, n in sorted(self.kinds.items()))}) '
+                f'in {elapsed_s:.0f} s ({self.sent / max(elapsed_s, 1e-9):.0f}/s); node alive: {alive}; '
+                f'crashes (core restarts, 216): {self.codes.get(216, 0)}; '
+                f'answers lost: {self.unanswered}; undefined exit codes: {len(self.undefined)}; '
+                f'rejected on the target: {self.rejected}, of which changed its state: '
+                f'{len(self.changed_by_rejected)}; axioms differing from the shadow: '
+                f'{len(differences)}')
+
     def close(self) -> None:
         self.armor.close()
         self.node.stop()
@@ -169,25 +300,32 @@ class Fuzzer:
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
-    parser.add_argument('--directives', type=int, default=100_000)
+    parser.add_argument('--directives', type=int, default=1_000_000)
     parser.add_argument('--seed', type=int, default=1)
+    parser.add_argument('--progress-every', type=int, default=50_000)
     options = parser.parse_args()
     fuzzer = Fuzzer(pathlib.Path(tempfile.mkdtemp(prefix='armor-fuzz-')), options.seed)
     started = time.monotonic()
     try:
-        fuzzer.run(options.directives)
+        left = options.directives
+        while left > 0:
+            batch = min(left, options.progress_every)
+            fuzzer.run(batch)
+            left -= batch
+            print(fuzzer.summary(time.monotonic() - started, True, set()), flush=True)
         alive = fuzzer.alive()
         differences = fuzzer.differences()
     finally:
         fuzzer.close()
-    elapsed = time.monotonic() - started
-    print(f'{fuzzer.sent} directives in {elapsed:.0f} s ({fuzzer.sent / elapsed:.0f}/s); '
-          f'node alive: {alive}; undefined exit codes: {len(fuzzer.undefined)}; '
-          f'axioms differing from the shadow: {len(differences)}')
+    print('final: ' + fuzzer.summary(time.monotonic() - started, alive, differences))
     print('exit codes: ' + ', '.join(f'{c}: {n}' for c, n in sorted(fuzzer.codes.items())))
-    for seconds, words, args, code in fuzzer.slow:
+    for words, args in fuzzer.changed_by_rejected[:20]:
+        print(f'CHANGED BY A REJECTED DIRECTIVE: {" ".join(words)} {args}')
+    for seconds, words, args, code in fuzzer.slow[:20]:
         print(f'slow: {seconds} s {" ".join(words)} {[a[:40] for a in args]} -> {code}')
-    return 0 if alive and not fuzzer.undefined and not differences else 1
+    ok = (alive and not fuzzer.undefined and not differences and not fuzzer.changed_by_rejected
+          and fuzzer.unanswered == 0 and fuzzer.codes.get(216, 0) == 0)
+    return 0 if ok else 1
 
 
 if __name__ == '__main__':

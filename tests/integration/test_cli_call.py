@@ -20,7 +20,7 @@ def test_no_service_says_what_it_waits_for_and_where_it_looked():
     result = armor_cli('call', '--namespace', '/nobody_here', '--wait', '3', '-', 'GET', 'ALL',
                        'REFS')
     elapsed = time.monotonic() - started
-    assert result.returncode == 2, result.stdout + result.stderr
+    assert result.returncode == 3, result.stdout + result.stderr  # not 2: a usage error
     domain = os.environ['ROS_DOMAIN_ID']
     waiting, failure = result.stderr.strip().splitlines()[-2:]
     assert waiting.startswith('armor call: waiting for service /nobody_here/armor_interface_srv '

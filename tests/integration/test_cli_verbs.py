@@ -75,4 +75,5 @@ def test_shell_runs_a_script_from_stdin(armor):
     # use of a reference that is not loaded fails at once and keeps the current one (item 13).
     assert lines[15].startswith("error: no reference named 'nowhere' is loaded")
     assert lines[16:21] == ['individual', '----------', 'bedroom', 'kitchen', '(2 rows)']
-    assert lines[21] == 'unknown command: FLY AWAY (try help)' and len(lines) == 22
+    # The node names what it does not know, with the closest commands (issue 35 item 3).
+    assert lines[21].startswith("error 205: unknown command 'FLY AWAY'") and len(lines) == 22

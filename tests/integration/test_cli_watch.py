@@ -51,6 +51,23 @@ def test_watch_prints_the_answer_then_each_room_as_it_becomes_and_stops_being_oc
     assert 'Traceback' not in terminal.screen, terminal.screen
 
 
+def test_watch_takes_a_query_as_armor_query_does_and_says_when_it_is_answered_again(watched):
+    """Issue 35 item 8: no QUERY nor "--" needed; after an inconsistency is repaired, a line
+    says so (else the "!" line stays the last on screen although the answer is back)."""
+    terminal = Terminal(['-m', 'armor_client.cli', 'watch', watched, 'IND', 'CLASS', 'Robot'])
+    terminal.wait_for(f'# {watched} QUERY IND CLASS Robot: 1 answer at revision 0')
+    terminal.wait_for('robot1')
+    broken = armor_call(watched, 'ADD', 'IND', 'CLASS', '--', 'kitchen', 'Corridor')
+    assert broken.returncode == 0, broken.stderr
+    terminal.wait_for('! revision 1: error 217')
+    repaired = armor_call(watched, 'REMOVE', 'IND', 'CLASS', '--', 'kitchen', 'Corridor')
+    assert repaired.returncode == 0, repaired.stderr
+    terminal.wait_for('# revision 2: answered again, 1 answer')
+    assert '+ robot1' not in terminal.screen and '- robot1' not in terminal.screen
+    ctrl_c(terminal)
+    assert terminal.close() == 0, terminal.screen
+
+
 def test_watch_refuses_what_is_not_a_query(watched):
     terminal = Terminal(['-m', 'armor_client.cli', 'watch', watched, 'ADD', 'IND', 'CLASS',
                          '--', 'robot9', 'Robot'])

@@ -7,6 +7,7 @@ afterwards, so tests neither see nor disturb each other or the preloaded "roboti
 
 import pathlib
 import re
+import time
 
 from armor_client import (Armor, ArmorArgumentError, ArmorCallTimeout, ArmorFileError,
                           ArmorMountError, ArmorServiceCallError, ArmorUnknownReferenceError,
@@ -342,14 +343,46 @@ def test_save_writes_files_on_the_node(ref, armor_node):
     assert outside.value.exit_code == 213
 
 
-def test_logging_switches(session, armor_node):
+def _logged_line(client: str) -> str:
+    """The directive log's line for a client's QUERY IND CLASS Robot on robotics, answered 0."""
+    return rf'\[{client}\] robotics: QUERY IND CLASS \[Robot\] -> 0$'
+
+
+def _ask_robots_as(armor, client: str) -> None:
+    assert Armor(client, transport=armor).reference('robotics').instances('Robot') == ['robot1']
+
+
+def test_logging_to_a_file_logs_while_on_and_appends(session, armor, armor_node):
     log = pathlib.Path(armor_node.scratch) / 'py_directives.log'
     session.log_to_file(str(log))
-    session.references()
+    _ask_robots_as(armor, 'logged_to_file')
+    session.log_to_file(None)  # its lines are in the file when it returns
+    _ask_robots_as(armor, 'not_logged_to_file')
+    session.log_to_file(str(log))
+    _ask_robots_as(armor, 'logged_again')
     session.log_to_file(None)
-    assert 'GET' in log.read_text()
+    text = log.read_text()
+    assert re.search(_logged_line('logged_to_file'), text, re.MULTILINE), text
+    assert re.search(_logged_line('logged_again'), text, re.MULTILINE), text
+    assert '[not_logged_to_file]' not in text
+
+
+def test_logging_to_the_screen_logs_while_on(session, armor, armor_node):
     session.log_to_screen(True)
+    _ask_robots_as(armor, 'logged_on_screen')
     session.log_to_screen(False)
+    _ask_robots_as(armor, 'not_logged_on_screen')
+    session.log_to_screen(True)
+    _ask_robots_as(armor, 'logged_on_screen_again')
+    session.log_to_screen(False)
+    # Lines reach the node's log in order: once the last is there, the others would be too.
+    deadline = time.monotonic() + 60
+    while not re.search(_logged_line('logged_on_screen_again'), armor_node.log(), re.MULTILINE):
+        assert time.monotonic() < deadline, armor_node.log()[-3000:]
+        time.sleep(0.2)
+    text = armor_node.log()
+    assert re.search(_logged_line('logged_on_screen'), text, re.MULTILINE)
+    assert '[not_logged_on_screen]' not in text
 
 
 def test_raw_calls_and_time_limits(session, armor):

@@ -260,7 +260,7 @@ def test_paths_outside_allowed_dirs_are_213(call, unchanged, armor_node):
 
     outside = armor_node.scratch.parent / f'{unique_name("outside")}.owl'
     response = failure(call, unchanged, 'SAVE', str(outside), code=213)
-    assert 'allowed_dirs' in response.error_description
+    assert 'write_dirs' in response.error_description
     failure(call, unchanged, 'SAVE INFERENCE', str(outside), code=213)
     failure(call, '', 'LOG FILE ON', str(outside.with_suffix('.log')), code=213)
     assert not outside.exists() and not outside.with_suffix('.log').exists()

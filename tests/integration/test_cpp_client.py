@@ -1,7 +1,7 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 """The C++ client (armor_cpp) against the live node, and the program of docs/cpp-client.md.
 
-The GoogleTest program build/armor_cpp/armor_cpp_live_test (built by make setup) runs once
+The GoogleTest program build/armor_cpp/armor_cpp_live_test (built by make test) runs once
 against the session's node, in its own process over real ROS 2; each of its cases is one test
 here, so a failure names the case and shows GoogleTest's message. The docs' C++ program is
 built as a user builds it (its CMakeLists.txt, find_package(armor_cpp) from install/) and must
@@ -26,7 +26,7 @@ EXAMPLES = REPO / 'armor_cpp' / 'examples'
 def live_cases():
     """The GoogleTest cases of the live test (Suite.Case), listed by the program itself."""
     if not LIVE_TEST.exists():
-        return ['build/armor_cpp/armor_cpp_live_test is missing: run make setup']
+        return ['build/armor_cpp/armor_cpp_live_test is missing: run make test (tools/setup.sh test builds it)']
     listed = subprocess.run([str(LIVE_TEST), '--gtest_list_tests'], capture_output=True,
                             text=True, timeout=60, check=True).stdout
     cases, suite = [], ''
@@ -40,7 +40,10 @@ def live_cases():
 
 @pytest.fixture(scope='module')
 def live_results(armor, armor_node, tmp_path_factory):
-    """Run the live test once: case -> its failure messages ('' when it passed)."""
+    """Run the live test once: case -> its failure messages ('' when it passed).
+
+    A case that skipped itself (GTEST_SKIP) did not pass: its message says it was skipped.
+    """
     report = tmp_path_factory.mktemp('gtest') / 'live.xml'
     env = {**os.environ, 'ARMOR_TEST_ONTOLOGY': str(ONTOLOGIES / 'robotics.owl'),
            'ARMOR_TEST_SCRATCH': str(armor_node.scratch)}
@@ -50,6 +53,9 @@ def live_results(armor, armor_node, tmp_path_factory):
     results = {}
     for case in ET.parse(report).getroot().iter('testcase'):
         failures = [failure.get('message', '') for failure in case.iter('failure')]
+        failures += [f'skipped: {skip.get("message", "")}' for skip in case.iter('skipped')]
+        if case.get('result') == 'skipped' and not failures:
+            failures.append('skipped')
         results[f'{case.get("classname")}.{case.get("name")}'] = '\n'.join(failures)
     return results
 

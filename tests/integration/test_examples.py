@@ -1,6 +1,7 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 """examples/surveillance_demo.py as a user runs it: a separate process, a few steps."""
 
+import re
 import subprocess
 import sys
 
@@ -41,3 +42,24 @@ def test_the_demo_plans_with_a_real_planner(armor):
         'corridor visited longest ago)'), lines[2]
     assert lines[3].startswith('t=110s  in C')
     Armor('examples_test', transport=armor).reference('examples_plan_test').drop()
+
+
+def test_the_python_guide_example_prints_what_its_comments_say_on_every_run(armor, armor_node):
+    """Issue 35 item 5: run twice, as a user re-running it does; the reference it left behind
+    must not change what the second run prints."""
+    text = (REPO / 'docs' / 'python-client.md').read_text()
+    example = re.search(r'## A complete example\n\n```python\n(.*?)```', text, re.DOTALL).group(1)
+    # Each print whose comment is a whole answer ('...' marks an answer shown in part).
+    promised = [comment.strip() for comment in re.findall(r'^\s*print\(.*\)\s+# (.*)$', example,
+                                                          re.MULTILINE) if '...' not in comment]
+    assert len(promised) >= 5, promised
+    # The session's node writes only in its scratch folder.
+    example = example.replace("'/tmp/home.ttl'", repr(str(armor_node.scratch / 'home.ttl')))
+    for run in (1, 2):
+        result = subprocess.run([sys.executable, '-c', example], cwd=REPO, capture_output=True,
+                                text=True, timeout=300)
+        assert result.returncode == 0, (run, result.stderr)
+        printed = result.stdout.splitlines()
+        shown = [line for line in printed if line in promised]
+        assert shown == promised, (run, printed)
+    Armor('examples_test', transport=armor).reference('home').drop()

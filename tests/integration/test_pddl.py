@@ -2,7 +2,7 @@
 """The planner bridge over ROS 2: PDDL problems from what the reasoner infers, solved by a real
 planner (pyperplan, a separate process) and checked against the domain's semantics.
 
-The session's node loads the PDDL plugin by default (plugin_dirs defaults to the plugins
+The session's node loads the PDDL plugin, as every node does (installed_plugins: the plugins
 make setup installed). Problems come from the tutorial's ontology (Urgent rooms: a SWRL rule
 Pellet evaluates) and from an office of our own (alarmed rooms: a defined class over an
 inverse property), under mapping files; after a fact changes over ROS, the next problem and

@@ -69,9 +69,10 @@ public final class TinyReasonerFactory extends org.semanticweb.HermiT.ReasonerFa
 
 
 def build_example(out: pathlib.Path) -> pathlib.Path:
-    """The repository's example plugin, built by its own script (docs/extending.md)."""
-    subprocess.run(['bash', str(REPO / 'examples' / 'plugins' / 'hello_command' / 'build.sh'),
-                    str(out)], check=True, timeout=120, capture_output=True)
+    """The repository's example plugin, built by the reusable script (docs/extending.md)."""
+    subprocess.run(['bash', str(REPO / 'examples' / 'plugins' / 'build.sh'),
+                    str(REPO / 'examples' / 'plugins' / 'hello_command'), str(out), 'hello.jar'],
+                   check=True, timeout=120, capture_output=True)
     return out
 
 
@@ -134,6 +135,8 @@ def test_the_example_plugin_adds_commands_clients_discover(plugged):
     origins = {command.name: command.origin for command in answered.commands}
     assert origins['QUERY HELLO'] == 'hello.jar' and origins['ADD MARK LOOPING'] == 'marks.jar'
     assert origins['QUERY IND CLASS'] == 'core'
+    # Issue 35 item 4: setting plugin_dirs adds to the installed plugins, the planner bridge stays.
+    assert origins['QUERY PDDL PROBLEM'].startswith('armor-pddl'), origins
     assert 'QUERY HELLO' not in {command.name for command in commands.COMMANDS}
     # armor query parses with the node's catalogue, so it knows the plugin's command.
     shown = subprocess.run(
@@ -280,13 +283,15 @@ def test_plugin_dirs_as_an_array_and_the_deprecated_plugin_dir(tmp_path):
     hello = build_example(tmp_path / 'hello')
     marks = build_marks(tmp_path / 'build', tmp_path / 'marks')
     node = start_node(tmp_path, '-p', f'plugin_dirs:=["{marks}"]', '-p', f'plugin_dir:={hello}',
-                      namespace='/plugged_alias')
+                      '-p', 'installed_plugins:=false', namespace='/plugged_alias')
     try:
         transport = ArmorTransport(namespace='/plugged_alias', service_wait_s=90.0)
         hello_answer = send(transport, '', 'QUERY HELLO', 'again')
         assert list(hello_answer.queried_objects) == ['hello again'], node.log()
         sleeping = send(transport, 'robotics', 'QUERY MARK SLEEPING', 1)
         assert list(sleeping.queried_objects) == ['slept']
+        # installed_plugins:=false leaves the planner bridge out.
+        assert send(transport, 'robotics', 'QUERY PDDL PROBLEM', '{}').exit_code == 205
         transport.close()
         assert 'parameter plugin_dir is deprecated: use plugin_dirs' in node.log()
     finally:

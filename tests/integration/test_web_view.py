@@ -7,6 +7,7 @@ made by a ROS client while the page stays open: it must show them without being 
 Every test leaves a screenshot in build/test-artifacts/web/.
 """
 
+import base64
 import json
 import pathlib
 import urllib.error
@@ -209,6 +210,28 @@ def test_a_floor_of_rooms_and_corridors_reads_as_a_map(web_node, page):
     assert graph_label(page, 'room_2_4') == 'room_2_4\nRoom'
 
 
+def test_one_link_whose_iri_the_naming_rules_refuse_leaves_the_rest_of_the_graph(web_node,
+                                                                                 page):
+    # An object property whose IRI holds a '|': RDF/XML takes it, ARMOR's naming rules do not.
+    ns = 'http://www.example.org/robotics#'
+    odd = 'http://www.example.org/odd|map#'
+    extra = (f'<owl:ObjectProperty rdf:about="{odd}leadsTo"/>\n'
+             f'<owl:NamedIndividual rdf:about="{ns}kitchen"><odd:leadsTo xmlns:odd="{odd}" '
+             f'rdf:resource="{ns}bedroom"/></owl:NamedIndividual>\n')
+    tbox = (ONTOLOGIES / 'robotics.owl').read_text()
+    path = web_node.scratch / 'odd-link.owl'
+    path.write_text(tbox.replace('</rdf:RDF>', extra + '</rdf:RDF>'))
+    load(web_node, 'web_odd', path=str(path))
+    open_reference(page, web_node, 'web_odd', 'graph')
+    note = page.locator('#graph-note')
+    # The robotics example's 5 individuals and their links, the odd one among them.
+    expect(note).to_contain_text('5 individuals')
+    expect(note.locator('.error')).to_have_count(0)
+    assert graph_label(page, 'bedroom') == 'bedroom\nRoom'
+    labels = page.evaluate('() => window.armorWeb.graph().edges().map((e) => e.data("label"))')
+    assert 'leadsTo' in labels and 'connectedTo' in labels, labels
+
+
 def test_an_inconsistent_reference_is_flagged_at_the_top_with_the_explanation(web_node, page):
     load(web_node, 'web_bad')
     open_reference(page, web_node, 'web_bad', 'individuals')
@@ -268,6 +291,65 @@ def test_recent_directives_name_the_client_and_the_outcome(web_node, page):
     expect(page.locator('#recent-table')).not_to_contain_text('armor_web')
     page.check('#recent-all')
     expect(page.locator('#recent-table')).to_contain_text('armor_web')
+
+
+def test_recent_directives_follow_queries_live_without_a_click(web_node, page):
+    """Issue 35 item 9: a query moves no revision, yet shows in the open list at once."""
+    load(web_node, 'web_recent_live')
+    open_reference(page, web_node, 'web_recent_live', 'recent')
+    rows = page.locator('#recent-table tbody tr')
+    expect(rows.first).to_contain_text('LOAD')
+    assert call(web_node, 'web_recent_live', 'QUERY IND CLASS', 'Robot',
+                client='live_reader').success
+    expect(rows.first).to_contain_text('live_reader', timeout=SHOWN_WITHIN_MS)
+    expect(rows.first).to_contain_text('QUERY IND CLASS')
+    assert not call(web_node, 'web_recent_live', 'QUERY IND', client='sloppy_reader').success
+    expect(rows.first).to_contain_text('sloppy_reader', timeout=SHOWN_WITHIN_MS)
+    assert still_the_same_document(page)
+
+
+def legend_colours(page):
+    page.wait_for_function('() => document.querySelectorAll("#graph-legend .swatch").length > 0')
+    return page.evaluate("""() => Object.fromEntries([...document.querySelectorAll(
+        '#graph-legend > span')].map((item) => [item.textContent,
+        getComputedStyle(item.querySelector('.swatch')).backgroundColor]))""")
+
+
+def test_each_class_keeps_one_colour_and_edge_labels_stay_readable(web_node, browser, page):
+    """Issue 35 item 9: a type's colour depends on its name only, not on the page's history;
+    edge labels are level, on a background, and at least 11 px on screen."""
+    load(web_node, 'web_colours')
+    open_reference(page, web_node, 'web_colours', 'graph')
+    expect(page.locator('#graph-legend')).to_contain_text('Room')
+    assert call(web_node, 'web_colours', 'REPLACE OBJECTPROP IND', 'isIn', 'alice', 'bedroom',
+                'corridor1').success
+    expect(page.locator('#graph-note')).to_contain_text('individuals')
+    page.wait_for_function('() => window.armorWeb.graph().getElementById('
+                           '"http://www.example.org/robotics#bedroom").data("label")'
+                           '.endsWith("OccupiedRoom")', timeout=SHOWN_WITHIN_MS)
+    seen_first = legend_colours(page)
+    other = browser.new_context(viewport={'width': 1400, 'height': 900}).new_page()
+    open_reference(other, web_node, 'web_colours', 'graph')
+    seen_later = legend_colours(other)
+    assert seen_first == seen_later and len(set(seen_later.values())) == len(seen_later)
+    other.context.close()
+
+    page.wait_for_function('() => window.armorWeb.settled()')
+    page.wait_for_function("""() => window.armorWeb.graph().edges().every((edge) =>
+        parseFloat(edge.renderedStyle('font-size')) >= 11)""", timeout=SHOWN_WITHIN_MS)
+    styles = page.evaluate("""() => window.armorWeb.graph().edges().map((edge) =>
+        [edge.style('text-rotation'), Number(edge.style('text-background-opacity'))])""")
+    assert styles and all(rotation == 'none' and opacity > 0.5 for rotation, opacity in styles)
+
+
+def test_the_dl_box_names_a_word_the_reference_does_not_know(web_node, page):
+    """Issue 35 item 2: a misspelt class answers nothing, and the page says why."""
+    load(web_node, 'web_dl_typo')
+    open_reference(page, web_node, 'web_dl_typo', 'query')
+    page.fill('#dl-expression', 'Agent and (isIn some Rom)')
+    page.click('#dl-form button')
+    expect(page.locator('#dl-result .note').first).to_contain_text(
+        "new to the reference: class 'Rom' (did you mean Room?)")
 
 
 def test_ten_thousand_individuals_are_paged_and_found_by_name(web_node, page):
@@ -362,7 +444,109 @@ def test_the_web_view_is_off_by_default(armor_node, armor):
     assert 'Web view' not in armor_node.log()
 
 
-def test_the_screenshot_in_the_readme_exists():
+SCREENSHOT = REPO / 'docs' / 'images' / 'web-view.png'
+# Parts of the page that look the same on every render of the README's scene (the rest shows
+# times or a layout): the header, the summary's first line, the reference's card without its
+# time, the tabs (Graph chosen), the graph's controls and its note (5 individuals, 8 links).
+STEADY_PARTS = {'header': 'header', 'summary': '#summary', 'card': '.card[data-name="robotics"]',
+                'tabs': '.tabs', 'controls': '#graph-form', 'note': '#graph-note'}
+COMPARE = """
+async ([stored, fresh, boxes, palette, canvas]) => {
+  const pixels = async (source) => {
+    const image = new Image();
+    image.src = source;
+    await image.decode();
+    const drawn = document.createElement('canvas');
+    drawn.width = image.width;
+    drawn.height = image.height;
+    const context = drawn.getContext('2d');
+    context.drawImage(image, 0, 0);
+    return {width: image.width, height: image.height,
+            data: context.getImageData(0, 0, image.width, image.height).data};
+  };
+  const [a, b] = [await pixels(stored), await pixels(fresh)];
+  // Per box: pixels that differ by more than a quarter of the range in some channel.
+  const differing = {};
+  for (const [name, box] of Object.entries(boxes)) {
+    let count = 0;
+    for (let y = box.y; y < box.y + box.height; y++) {
+      for (let x = box.x; x < box.x + box.width; x++) {
+        const i = 4 * (y * a.width + x);
+        if ([0, 1, 2].some(c => Math.abs(a.data[i + c] - b.data[i + c]) > 64)) count++;
+      }
+    }
+    differing[name] = count;
+  }
+  // In the graph: each node colour's share of the pixels painted in a node colour.
+  const shares = (image) => {
+    const counts = palette.map(() => 0);
+    for (let y = canvas.y; y < canvas.y + canvas.height; y++) {
+      for (let x = canvas.x; x < canvas.x + canvas.width; x++) {
+        const i = 4 * (y * image.width + x);
+        const k = palette.findIndex(([r, g, bl]) => Math.abs(image.data[i] - r) < 3
+            && Math.abs(image.data[i + 1] - g) < 3 && Math.abs(image.data[i + 2] - bl) < 3);
+        if (k >= 0) counts[k]++;
+      }
+    }
+    const total = counts.reduce((x, y) => x + y, 0) || 1;
+    return counts.map(n => n / total);
+  };
+  return {stored: [a.width, a.height], fresh: [b.width, b.height], differing,
+          storedShares: shares(a), freshShares: shares(b)};
+}
+"""
+
+
+def _data_url(png: bytes) -> str:
+    return 'data:image/png;base64,' + base64.b64encode(png).decode('ascii')
+
+
+def test_the_readme_screenshot_shows_the_page_it_claims(tmp_path, browser):
+    """The README's picture is the web view's graph of the robotics example (Openllet) after
+    alice moved into the bedroom: the same scene rendered afresh (the page open, then the move
+    over ROS, as a user would see it) has its size, the same steady parts pixel for pixel, and
+    its nodes in the same colours in the same shares (the layout itself varies)."""
     readme = (REPO / 'README.md').read_text()
     assert '](docs/images/web-view.png)' in readme
-    assert pathlib.Path(REPO / 'docs' / 'images' / 'web-view.png').stat().st_size > 10_000
+    assert 'after alice moved into the bedroom' in readme
+    port = free_port()
+    node = start_node(tmp_path, '-p', f'web_port:={port}', namespace='/web_readme')
+    node.armor = ArmorTransport(namespace='/web_readme', service_wait_s=90.0)
+    context = None
+    try:
+        assert call(node, 'robotics', 'DROP').success
+        load(node, 'robotics')
+        context = browser.new_context(viewport={'width': 1280, 'height': 800})
+        page = context.new_page()
+        page.goto(f'http://127.0.0.1:{port}/#/robotics/graph')
+        expect(page.locator('#graph-note')).to_contain_text('5 individuals, 6 links')
+        assert call(node, 'robotics', 'ADD OBJECTPROP IND', 'isIn', 'alice', 'bedroom').success
+        expect(page.locator('#graph-note')).to_contain_text('5 individuals, 8 links',
+                                                            timeout=SHOWN_WITHIN_MS)
+        page.wait_for_function('() => window.armorWeb.settled()')
+        page.locator('#graph-canvas').hover(position={'x': 1, 'y': 1})  # no hover effect
+        fresh = page.screenshot()
+        ARTIFACTS.mkdir(parents=True, exist_ok=True)
+        (ARTIFACTS / 'readme-scene-fresh.png').write_bytes(fresh)
+        boxes = {}
+        for name, selector in STEADY_PARTS.items():
+            box = page.locator(selector).first.bounding_box()
+            boxes[name] = {'x': round(box['x']), 'y': round(box['y']),
+                           'width': round(box['width']), 'height': round(box['height'])}
+        boxes['summary']['height'] = 20  # its first line: the second holds the reasoning time
+        boxes['card']['height'] -= 22  # without the row of the reasoning time
+        canvas = {k: round(v) for k, v in page.locator('#graph-canvas').bounding_box().items()}
+        canvas['height'] = 800 - canvas['y']
+        palette = page.evaluate(
+            'PALETTE.map(c => [1, 3, 5].map(i => parseInt(c.slice(i, i + 2), 16)))')
+        seen = page.evaluate(COMPARE, [_data_url(SCREENSHOT.read_bytes()), _data_url(fresh),
+                                       boxes, palette, canvas])
+    finally:
+        if context is not None:
+            context.close()
+        node.armor.close()
+        node.stop()
+    assert seen['stored'] == seen['fresh'] == [1280, 800]
+    assert all(count <= 3 for count in seen['differing'].values()), seen['differing']
+    for stored_share, fresh_share in zip(seen['storedShares'], seen['freshShares']):
+        assert abs(stored_share - fresh_share) < 0.05, (seen['storedShares'], seen['freshShares'])

@@ -17,7 +17,7 @@ CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic'
 def launch(playwright, *extra_args: str, executable: str = CHROMIUM):
     """A headless chromium (Playwright Browser); fails plainly when the browser is missing."""
     if not os.access(CHROMIUM, os.X_OK):
-        raise RuntimeError(f'{CHROMIUM} is missing: make setup installs Debian\'s chromium')
+        raise RuntimeError(f'{CHROMIUM} is missing: make test (tools/setup.sh browser) installs Debian\'s chromium')
     return playwright.chromium.launch(executable_path=executable,
                                       args=[*CHROMIUM_ARGS, *extra_args])
 

@@ -42,7 +42,7 @@ class ArmorUtilsClient:
         """Save the ontology with its inferences (SAVE INFERENCE); the live one is unchanged.
 
         Args:
-            filepath: the file on the node's machine.
+            filepath: the file on the node's machine (a relative path is the caller's).
 
         Raises:
             ArmorServiceInternalError: the file could not be written (209, 213).
@@ -53,7 +53,8 @@ class ArmorUtilsClient:
         """Save the ontology (SAVE, or SAVE INFERENCE with inference=True).
 
         Args:
-            filepath: the file on the node's machine ('' = the file it was loaded from).
+            filepath: the file on the node's machine ('' = the file it was loaded from; a
+                relative path is the caller's).
             inference: also write the inferred knowledge.
 
         Raises:
@@ -67,7 +68,7 @@ class ArmorUtilsClient:
         """Load an ontology file as this client's reference (LOAD FILE [MOUNTED]).
 
         Args:
-            owl_file_path: the file on the node's machine.
+            owl_file_path: the file on the node's machine (a relative path is the caller's).
             iri: the ontology IRI plain names resolve against ('' = the file's own).
             buffered_manipulation: queue changes until apply_buffered_changes().
             reasoner: PELLET (the default, as in armor_api), HERMIT, JFACT or ELK.
@@ -114,7 +115,8 @@ class ArmorUtilsClient:
 
         Args:
             switch: True to log.
-            filepath: the log file on the node's machine (needed to switch on).
+            filepath: the log file on the node's machine (needed to switch on; a relative
+                path is the caller's).
 
         Raises:
             ArmorServiceCallError: switching on without a file path (nothing is sent).

@@ -11,12 +11,19 @@ package adds a verb by declaring one more entry point in its setup.py.
 
 import argparse
 import functools
+import os
 import signal
 import sys
 from importlib.metadata import entry_points, EntryPoint
 from typing import Dict
 
 VERB_GROUP = 'armor.verbs'
+
+# The exit statuses of every verb (scripts test them; README "From the command line").
+EXIT_OK = 0
+EXIT_FAILED = 1         # ARMOR answered: the directive failed (code and description on stderr)
+EXIT_USAGE = 2          # the command line was wrong (as for argparse's own errors)
+EXIT_NO_SERVICE = 3     # no ARMOR service answered
 
 
 @functools.lru_cache(maxsize=1)
@@ -73,9 +80,14 @@ def main(argv=None) -> int:
         return args.run(args)
     except KeyboardInterrupt:
         return 128 + signal.SIGINT
+    except BrokenPipeError:
+        # The reader went away (armor call ... | head): stop quietly, as other tools do; stdout
+        # goes nowhere from here, so that flushing it at exit raises nothing either.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 128 + signal.SIGPIPE
     except RuntimeError as error:
         print(f'armor {args.verb}: {error}', file=sys.stderr)
-        return 2
+        return EXIT_USAGE
 
 
 def _end_on_sigterm() -> None:

@@ -4,11 +4,15 @@
   armor call REF COMMAND [PRIMARY [SECONDARY]] -- ARGS...
 
 REF is the reference name ("-" for none, as GET ALL REFS needs none). The exit status is 0
-when the directive succeeded, 1 when it failed (its code and description go to stderr), and 2
-when the service could not be reached. Examples:
+when the directive succeeded, 1 when it failed (its code and description go to stderr), 2
+when the command line is wrong and 3 when the service could not be reached. A relative path
+argument (LOAD FILE, SAVE, a PDDL mapping...) is this directory's: it is sent made absolute.
+JSON answers are indented; --raw prints the results alone, as they came (no "# exit_code"
+line), so that an answer can be saved as a file or read by a script. Examples:
   armor call robotics QUERY IND CLASS -- OccupiedRoom
   armor call robotics ADD OBJECTPROP IND -- isIn robot1 bedroom
   armor call - GET ALL REFS
+  armor call robotics QUERY PDDL PROBLEM --raw -- mapping.yaml > problem.pddl
 
 The first call starts a background relay that keeps ROS 2 discovered, so that later calls
 answer in a few tens of milliseconds instead of a second (ARMOR_CALL_RELAY=0 or --no-relay:
@@ -22,7 +26,7 @@ import sys
 import threading
 from types import SimpleNamespace
 
-from armor_client.cli import call_relay
+from armor_client.cli import call_relay, EXIT_FAILED, EXIT_NO_SERVICE, EXIT_OK
 
 SERVICE = 'armor_interface_srv'
 
@@ -39,9 +43,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--namespace', default='', help='namespace of the ARMOR node')
     parser.add_argument('--timeout', type=float, default=None,
                         help='seconds to wait for the answer (default: no limit)')
-    parser.add_argument('--wait', type=float, default=5.0,
-                        help='seconds to wait for the service to appear (default: 5)')
-    parser.add_argument('--json', action='store_true', help='print the whole response as JSON')
+    parser.add_argument('--wait', type=float, default=call_relay.DEFAULT_WAIT_S,
+                        help='seconds to wait for the service to appear '
+                        f'(default: {call_relay.DEFAULT_WAIT_S:g})')
+    output = parser.add_mutually_exclusive_group()
+    output.add_argument('--json', action='store_true', help='print the whole response as JSON')
+    output.add_argument('--raw', action='store_true',
+                        help='print only the results, exactly as answered (no "# exit_code" line)')
     parser.add_argument('--no-relay', action='store_true',
                         help='start ROS in this process instead of using the background relay')
 
@@ -64,12 +72,12 @@ def run(args) -> int:
     if 'error' in answer:
         message = _unreachable(args) if answer.get('unreachable') else answer['error']
         print(f'armor call: {message}', file=sys.stderr)
-        return 2
+        return EXIT_NO_SERVICE
     response = SimpleNamespace(**answer['response'])
     response.sparql_queried_objects = [SimpleNamespace(**item)
                                        for item in response.sparql_queried_objects]
-    print_response(response, as_json=args.json)
-    return 0 if response.success else 1
+    print_response(response, as_json=args.json, raw=args.raw)
+    return EXIT_OK if response.success else EXIT_FAILED
 
 
 def _use_relay(args) -> bool:
@@ -77,23 +85,35 @@ def _use_relay(args) -> bool:
 
 
 def _relayed(fields: dict, args, waiting: '_Waiting'):
-    """The relay's answer, or None when no relay took it (one is then started for next time)."""
+    """The relay's answer, or None when no relay took it."""
+    # Relative paths are this directory's, not the relay's.
+    request = {'directive': fields, 'namespace': args.namespace, 'wait_s': args.wait,
+               'timeout_s': args.timeout, 'cwd': os.getcwd()}
     try:
-        return call_relay.call({'directive': fields, 'namespace': args.namespace,
-                                'wait_s': args.wait, 'timeout_s': args.timeout},
-                               on_state=waiting.state)
+        return call_relay.call(request, on_state=waiting.state)
+    except call_relay.RelayRefused as refusal:
+        print(f'armor call: {refusal}', file=sys.stderr)
+        return None
     except call_relay.RelayUnavailable:
-        call_relay.start_in_background()
+        pass
+    # No relay yet: start one and go through it. Discovering the service here as well would
+    # do the same work twice on the same cores.
+    call_relay.start_in_background(prepare=args.namespace)
+    try:
+        return call_relay.call(request, on_state=waiting.state, connect_s=2.0)
+    except call_relay.RelayUnavailable:
         return None
 
 
 def _direct(fields: dict, args) -> dict:
+    from armor_client.commands import find_on
     from armor_client.errors import ArmorServiceCallError
     from armor_client.transport import ArmorTransport, directive
-    request = directive(fields['client'], fields['reference'], fields['command'],
-                        fields['primary'], fields['secondary'], fields['args'])
+    words = (fields['command'], fields['primary'], fields['secondary'])
     try:
         with ArmorTransport(namespace=args.namespace, service_wait_s=args.wait) as armor:
+            find_on(armor, *words)  # a plugin's command: which of its arguments are paths
+            request = directive(fields['client'], fields['reference'], *words, fields['args'])
             response = armor.call(request, timeout_s=args.timeout)
     except ArmorServiceCallError as error:
         return {'error': str(error), 'unreachable': 'did not answer within' in str(error)}
@@ -137,8 +157,8 @@ class _Waiting:
 
     def _say(self) -> None:
         if self._discovering:
-            print(f'armor call: waiting for {_where(self._args)}; giving up after '
-                  f'{self._args.wait:g} s', file=sys.stderr, flush=True)
+            print(f'armor call: waiting for {_where(self._args)} to be discovered (up to '
+                  f'{self._args.wait:g} s)', file=sys.stderr, flush=True)
         else:
             limit = (f'up to {self._args.timeout:g} s' if self._args.timeout
                      else 'without a time limit (--timeout sets one)')
@@ -146,7 +166,14 @@ class _Waiting:
                   f'answer {limit}', file=sys.stderr, flush=True)
 
 
-def print_response(response, as_json: bool = False) -> None:
+def print_response(response, as_json: bool = False, raw: bool = False) -> None:
+    if raw:
+        if not response.success:
+            print(f'error {response.exit_code}: {response.error_description}', file=sys.stderr)
+        for item in response.queried_objects:
+            print(item, end='' if item.endswith('\n') else '\n')
+        _print_rows(response.sparql_queried_objects)
+        return
     if as_json:
         print(json.dumps({
             'success': response.success, 'timeout': response.timeout,
@@ -169,9 +196,23 @@ def print_response(response, as_json: bool = False) -> None:
     print(f'# exit_code {response.exit_code}, {"".join(f + ", " for f in flags)}'
           f'{len(response.queried_objects) or len(response.sparql_queried_objects)} result(s)')
     for item in response.queried_objects:
-        print(item)
+        print(_readable(item))
+    _print_rows(response.sparql_queried_objects)
+
+
+def _readable(item: str) -> str:
+    """A JSON answer (GET CATALOGUE's, GET REF CHANGES') indented; other text as it is."""
+    if not item.startswith(('{', '[')):
+        return item
+    try:
+        return json.dumps(json.loads(item), indent=2, ensure_ascii=False)
+    except ValueError:
+        return item
+
+
+def _print_rows(items) -> None:
     row = []
-    for item in response.sparql_queried_objects:
+    for item in items:
         if item.key:
             row.append(f'{item.key}={item.value}')
         else:

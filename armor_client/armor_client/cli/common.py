@@ -7,6 +7,7 @@ import sys
 from typing import Any, Callable, List, Optional, Sequence, TextIO, Tuple
 
 from armor_client import commands
+from armor_client.cli import EXIT_FAILED, EXIT_NO_SERVICE
 from armor_client.errors import ArmorServiceCallError, ArmorServiceInternalError
 from armor_client.operations import Answers, sparql_rows
 from armor_client.reference import Armor
@@ -60,11 +61,38 @@ def learn_commands(armor: Armor) -> None:
         pass
 
 
+def query_words(words: Sequence[str],
+                trailing: Sequence[str]) -> Tuple[Tuple[str, str, str], List[str]]:
+    """A QUERY as armor query and armor watch take it: its specs and its arguments.
+
+    QUERY may be left out; the longest known combination of specs is taken, the rest are
+    arguments; a lone "--" ends the specs early (its arguments are ``trailing``). Words that
+    name no known combination (a misspelt spec) are split as typed, so that the node answers
+    205 with the closest commands. Learn the node's plugins first (learn_commands).
+
+    Args:
+        words: the words before "--".
+        trailing: the words after it.
+
+    Returns:
+        ((command, primary, secondary), arguments).
+    """
+    words = list(words)
+    if words and words[0].upper() not in commands.next_words([]):
+        words.insert(0, 'QUERY')
+    if trailing:
+        words += ['--', *trailing]
+    command, arguments = commands.split_directive(words)
+    if command is None:
+        return commands.as_typed(words)
+    return command.words, arguments
+
+
 def reporting_errors(verb: str) -> Callable[[Callable[..., int]], Callable[..., int]]:
     """Turn ARMOR's errors into the armor command's exit statuses.
 
     A failed directive prints ``error CODE: description`` on stderr and exits 1; a service
-    that cannot be reached exits 2, as armor call does.
+    that cannot be reached exits 3, as armor call does.
 
     Args:
         verb: the verb's name, for messages.
@@ -79,10 +107,10 @@ def reporting_errors(verb: str) -> Callable[[Callable[..., int]], Callable[..., 
                 return run(*args)
             except ArmorServiceInternalError as error:
                 print(f'error {error.exit_code}: {error.description}', file=sys.stderr)
-                return 1
+                return EXIT_FAILED
             except ArmorServiceCallError as error:
                 print(f'armor {verb}: {error}', file=sys.stderr)
-                return 2
+                return EXIT_NO_SERVICE
         return guarded
     return decorate
 
@@ -127,7 +155,11 @@ def print_answer(response: Any, primary: str, secondary: str, iris: bool,
         print('consistent' if response.is_consistent else 'INCONSISTENT', file=out)
         if response.is_consistent:
             return
-    if response.sparql_queried_objects:
+    if (len(response.queried_objects) == 1 and '\n' in response.queried_objects[0]
+            and not is_literal(response.queried_objects[0])):
+        # A document (a PDDL problem): its own lines, not a one-cell table as wide as it.
+        print(response.queried_objects[0].rstrip('\n'), file=out)
+    elif response.sparql_queried_objects:
         headers, rows = sparql_table(response.sparql_queried_objects, iris)
         print_table(headers, rows, out)
     elif response.queried_objects and all(is_literal(a) for a in response.queried_objects):

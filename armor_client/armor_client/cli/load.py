@@ -3,20 +3,21 @@
 
   armor load REF PATH [--reasoner PELLET] [--iri IRI] [--mount] ...
 
-PATH is made absolute against the current directory; the node reads only inside its
-allowed_dirs. Loading a name that is loaded from the same file reuses it. Examples:
+PATH is made absolute against the current directory, as every client's paths are; the node
+reads only inside its allowed_dirs. Loading a name that is loaded from the same file reuses
+it. Examples:
   armor load map ontologies/robotics.owl --reasoner PELLET
   armor load web https://example.org/onto.owl --web
-Exit status: 0 loaded, 1 refused, 2 no service.
+Exit status: 0 loaded, 1 refused, 2 usage error, 3 no service.
 """
 
 import argparse
-import os
 import sys
 import threading
 import time
 
 from armor_client.cli.common import add_connection_arguments, connect, reporting_errors
+from armor_client.paths import absolute
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -59,7 +60,7 @@ def run(args: argparse.Namespace) -> int:
             if args.web:
                 reference = armor.load_web(args.reference, args.source, args.iri, **options)
             else:
-                source = os.path.abspath(args.source)
+                source = absolute(args.source)
                 reference = armor.load_file(args.reference, source, args.iri, **options)
         finally:
             if bar:

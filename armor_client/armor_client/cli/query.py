@@ -4,22 +4,21 @@
   armor query REF SPEC [SPEC] ARGS...        (QUERY is implied; "--" ends the specs early)
 
 The specs are those of QUERY in docs/commands.md; the longest known combination is taken, the
-rest are arguments. Examples:
+rest are arguments (a misspelt spec is answered with the closest ones). Examples:
   armor query robotics IND CLASS OccupiedRoom
   armor query robotics DATAPROP IND batteryLevel robot1
   armor query robotics IND DL "Agent and isIn some Room"
   armor query robotics CONSISTENCY
 SPARQL is answered as a table with a column per variable (see also armor sparql).
-Exit status: 0 answered, 1 the query failed, 2 no service.
+Exit status: 0 answered, 1 the query failed, 2 usage error, 3 no service.
 """
 
 import argparse
 import sys
 
-from armor_client import commands
 from armor_client.cli.call import print_response
 from armor_client.cli.common import (add_connection_arguments, connect, learn_commands,
-                                     print_answer, reporting_errors)
+                                     print_answer, query_words, reporting_errors)
 from armor_client.errors import error_for
 
 
@@ -51,22 +50,16 @@ def run(args: argparse.Namespace) -> int:
     Returns:
         The exit status.
     """
-    words = list(args.words)
-    if words[0].upper() != 'QUERY':
-        words.insert(0, 'QUERY')
-    if args.directive_args:
-        words += ['--', *args.directive_args]
     with connect(args) as armor:
         learn_commands(armor)
-        command, arguments = commands.split_directive(words)
-        if command is None or command.words[0] != 'QUERY':
-            raise RuntimeError(f'no QUERY command starts with "{" ".join(words)}"; '
-                               'see docs/commands.md#queries')
-        _, primary, secondary = command.words
+        (command, primary, secondary), arguments = query_words(args.words, args.directive_args)
+        if command.upper() != 'QUERY':
+            raise RuntimeError(f'armor query asks questions: {command} is no QUERY; see '
+                               'docs/commands.md#queries')
         if (primary, secondary) == ('SPARQL', ''):
             # A table needs the variable names, which only the formatted answer carries.
             secondary = 'FORMATTED'
-        response = armor.call(args.reference, 'QUERY', primary, secondary, arguments)
+        response = armor.call(args.reference, command, primary, secondary, arguments)
     if args.json:
         print_response(response, as_json=True)
         return 0 if response.success else 1

@@ -3,7 +3,7 @@
 
   armor refs
 
-Exit status: 0 listed, 2 no service.
+Exit status: 0 listed, 2 usage error, 3 no service.
 """
 
 import argparse

@@ -3,16 +3,17 @@
 
   armor save REF [PATH] [--format turtle] [--inferences]
 
-PATH is made absolute against the current directory (the node may run elsewhere); without
+PATH is made absolute against the current directory, as every client's paths are; without
 PATH the ontology goes back to the file it was loaded from. The node writes only inside its
 allowed_dirs. --inferences adds the inferred types, property values and hierarchy to the file
-(the live ontology does not change). Exit status: 0 saved, 1 refused, 2 no service.
+(the live ontology does not change).
+Exit status: 0 saved, 1 refused, 2 usage error, 3 no service.
 """
 
 import argparse
-import os
 
 from armor_client.cli.common import add_connection_arguments, connect, reporting_errors
+from armor_client.paths import absolute
 
 FORMATS = ('rdfxml', 'owlxml', 'turtle', 'functional', 'manchester')
 
@@ -42,7 +43,7 @@ def run(args: argparse.Namespace) -> int:
     Returns:
         The exit status.
     """
-    path = os.path.abspath(args.path) if args.path else ''
+    path = absolute(args.path)
     with connect(args) as armor:
         armor.reference(args.reference).save(path, args.format, inferences=args.inferences)
     print(f'saved {args.reference} to {path or "the file it was loaded from"}')

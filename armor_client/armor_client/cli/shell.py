@@ -152,6 +152,8 @@ class Shell:
         except ArmorError as error:
             code = '' if error.exit_code is None else f' {error.exit_code}'
             print(f'error{code}: {error.description}', file=self.out)
+        except RuntimeError as error:
+            print(f'error: {error}', file=self.out)
         return True
 
     def _use(self, words: List[str]) -> None:
@@ -183,7 +185,13 @@ class Shell:
     def _directive(self, words: List[str]) -> None:
         command, arguments = commands.split_directive(words)
         if command is None:
-            print(f'unknown command: {" ".join(words[:3])} (try help)', file=self.out)
+            # Sent as typed: the node answers 205 with the commands closest to it.
+            typed, arguments = commands.as_typed(words)
+            response = self.armor.call(self.reference, *typed, arguments)
+            if not response.success:
+                raise error_for(response)
+            for item in response.queried_objects:
+                print(item, file=self.out)
             return
         sent = command.words
         if sent == ('QUERY', 'SPARQL', ''):

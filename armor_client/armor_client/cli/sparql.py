@@ -7,7 +7,7 @@ The query sees asserted and inferred knowledge; the ontology's prefixes are pred
 ":" is the reference's namespace. Examples:
   armor sparql robotics "SELECT ?who ?where WHERE { ?who :isIn ?where }"
   armor sparql robotics "ASK { :robot1 :isIn :kitchen }"
-Exit status: 0 answered, 1 the query failed, 2 no service.
+Exit status: 0 answered, 1 the query failed, 2 usage error, 3 no service.
 """
 
 import argparse

@@ -1,27 +1,32 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 """Watch a query's answer change (or every change of a reference) until Ctrl-C.
 
-  armor watch REF COMMAND [PRIMARY [SECONDARY]] -- ARGS...    (a QUERY: its answer)
-  armor watch REF                                             (every change of REF; - for all)
+  armor watch REF SPEC [SPEC] ARGS...        (a query, written as for armor query: its answer)
+  armor watch REF                            (every change of REF; - for all)
 
-With a QUERY, prints its answer now, then one line per answer that appears ("+ name") or
+With a query, prints its answer now, then one line per answer that appears ("+ name") or
 disappears ("- name") with the revision it holds at, inferred answers included: the node asks
-the reasoner again after each change. Examples:
-  armor watch robotics QUERY IND CLASS -- OccupiedRoom
-  armor watch robotics QUERY SPARQL -- "SELECT ?who ?room WHERE { ?who :isIn ?room }"
+the reasoner again after each change. QUERY may be written or left out, and "--" ends the
+specs early, as for armor query. Examples:
+  armor watch robotics IND CLASS OccupiedRoom
+  armor watch robotics SPARQL "SELECT ?who ?room WHERE { ?who :isIn ?room }"
 Without one, prints one line per acknowledged change: revision, client, directives.
 Lines starting with "!" report what went wrong: the query failing at a revision (e.g. 217,
-inconsistent), messages missed (the answer shown may then be incomplete).
-Exit status: 0 after Ctrl-C, 1 the node refused the query, 2 no service.
+inconsistent), messages missed (the answer shown may then be incomplete); a line starting
+with "#" says when the query is answered again after such a failure.
+Exit status: 0 after Ctrl-C, 1 the node refused the query, 2 usage error, 3 no service.
 """
 
 import argparse
+import os
 import signal
+import sys
 import threading
 import time
 from typing import Any, Callable
 
-from armor_client.cli.common import add_connection_arguments, connect, reporting_errors
+from armor_client.cli.common import (add_connection_arguments, connect, learn_commands,
+                                     query_words, reporting_errors)
 from armor_client.subscriptions import AnswerChange, Change
 from armor_client.transport import directive
 from armor_client.values import Value
@@ -30,6 +35,8 @@ from armor_client.values import Value
 TRAILING = '--'
 # How long an answer topic may go without its publisher before the watch subscribes again.
 _GONE_S = 5.0
+# Set to end the watch: SIGTERM, or nobody reading any more.
+_STOP = threading.Event()
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -40,8 +47,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     """
     parser.add_argument('reference', metavar='REF', help='reference name ("-": every reference, '
                         'when watching changes)')
-    parser.add_argument('words', nargs='*', metavar='COMMAND [PRIMARY [SECONDARY]]',
-                        help='a QUERY and its specs (none: watch every change of REF)')
+    parser.add_argument('words', nargs='*', metavar='SPEC/ARG',
+                        help='the QUERY specs, then the arguments (none: watch every change of '
+                        'REF)')
     parser.add_argument('--iri', action='store_true', help='show full IRIs, not short names')
     add_connection_arguments(parser)
 
@@ -56,15 +64,12 @@ def run(args: argparse.Namespace) -> int:
     Returns:
         The exit status.
     """
-    if len(args.words) > 3:
-        raise RuntimeError('at most COMMAND PRIMARY SECONDARY before "--"; put the arguments '
-                           f'after "--" (got {" ".join(args.words)})')
     import rclpy
     from rclpy.signals import SignalHandlerOptions
     # Without rclpy's signal handlers Ctrl-C is a KeyboardInterrupt here, and the subscription
     # is ended on the way out; SIGTERM too.
     rclpy.init(signal_handler_options=SignalHandlerOptions.NO)
-    stop = threading.Event()
+    stop = _STOP
     signal.signal(signal.SIGTERM, lambda *_: stop.set())
     try:
         with connect(args, iris=args.iri) as armor:
@@ -77,10 +82,10 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _watch(args: argparse.Namespace, armor: Any, stop: threading.Event) -> None:
-    if args.words:
-        command, primary, secondary = (args.words + ['', ''])[:3]
-        query = directive(armor.client_name, args.reference, command, primary, secondary,
-                          args.directive_args)
+    if args.words or args.directive_args:
+        learn_commands(armor)
+        words, arguments = query_words(args.words, args.directive_args)
+        query = directive(armor.client_name, args.reference, *words, arguments)
         while not stop.is_set():
             printer = _AnswerPrinter(args.reference, query)
             with armor.reference(args.reference).subscribe(query, printer.print) as watched:
@@ -102,6 +107,7 @@ class _AnswerPrinter:
         self._title = ' '.join(word for word in (
             reference, query.command, query.primary_command_spec, query.secondary_command_spec,
             *query.args) if word)
+        self._failing = False
 
     def print(self, change: AnswerChange) -> None:
         if change.initial:
@@ -116,6 +122,12 @@ class _AnswerPrinter:
                  'answer shown may be incomplete')
         if change.exit_code:
             _say(f'! revision {change.revision}: error {change.exit_code}: {change.error}')
+        elif self._failing:
+            # Else the "!" line would stay the last one on screen, as if nothing had changed.
+            count = len(change.answer)
+            _say(f'# revision {change.revision}: answered again, {count} '
+                 f'answer{"" if count == 1 else "s"}')
+        self._failing = change.exit_code != 0
         for answer in change.removed:
             _say(f'- {_text(answer)}  (revision {change.revision})')
         for answer in change.added:
@@ -151,4 +163,9 @@ def _wait(stop: threading.Event, alive: Callable[[], bool] = lambda: True) -> No
 
 
 def _say(line: str) -> None:
-    print(line, flush=True)
+    try:
+        print(line, flush=True)
+    except BrokenPipeError:
+        # The reader went away (armor watch ... | head): end the watch quietly.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        _STOP.set()

@@ -118,7 +118,8 @@ public:
   Reference reference(const std::string & name) const;
   Reference reference(const std::string & name, bool iris) const;
 
-  // Load an ontology file, as the node sees it, as a new reference (LOAD FILE [MOUNTED]).
+  // Load an ontology file on the node's machine as a new reference (LOAD FILE [MOUNTED]); a
+  // relative path is this process's, sent made absolute (as every path argument here).
   // Loading a name loaded from the same file reuses it. Throws FileError, ReasonerError.
   Reference load_file(
     const std::string & name, const std::string & path, const std::string & iri = "",

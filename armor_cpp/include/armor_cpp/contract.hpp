@@ -62,10 +62,14 @@ inline constexpr Command GET_ALL_REFS{"GET", "ALL", "REFS", Kind::Global, 0, 0, 
 inline constexpr Command GET_LOAD_PROGRESS{"GET", "LOAD", "PROGRESS", Kind::Global, 0, 0, false, false};
 // the catalogue: commands (plugins' too), exit codes, settings; JSON
 inline constexpr Command GET_CATALOGUE{"GET", "CATALOGUE", "", Kind::Global, 0, 0, false, false};
+// what the state directory could not restore or cannot keep now, one JSON object each; empty when nothing
+inline constexpr Command GET_STATE_DAMAGE{"GET", "STATE", "DAMAGE", Kind::Global, 0, 0, false, false};
 // the client that holds the mount, if any
 inline constexpr Command GET_REF_CLIENT{"GET", "REF", "CLIENT", Kind::Global, 0, 1, false, false};
 // the revision: how many changes it has acknowledged
 inline constexpr Command GET_REF_REVISION{"GET", "REF", "REVISION", Kind::Global, 0, 1, false, false};
+// a SHA-256 of its asserted axioms, annotations and imports: equal for equal ontologies
+inline constexpr Command GET_REF_DIGEST{"GET", "REF", "DIGEST", Kind::Global, 0, 1, false, false};
 // its latest acknowledged changes after a revision, one JSON object each
 inline constexpr Command GET_REF_CHANGES{"GET", "REF", "CHANGES", Kind::Global, 0, 3, false, false};
 // log directives on the node's screen
@@ -222,7 +226,7 @@ inline constexpr Command QUERY_SPARQL_FORMATTED{"QUERY", "SPARQL", "FORMATTED", 
 inline constexpr Command QUERY_CONSISTENCY{"QUERY", "CONSISTENCY", "", Kind::Query, 0, 0, false, false};
 
 // Every command the core answers, in the catalogue's order.
-inline constexpr std::array<const Command *, 92> kCommands{
+inline constexpr std::array<const Command *, 94> kCommands{
   &LOAD_FILE,
   &LOAD_WEB,
   &LOAD_FILE_MOUNTED,
@@ -236,8 +240,10 @@ inline constexpr std::array<const Command *, 92> kCommands{
   &GET_ALL_REFS,
   &GET_LOAD_PROGRESS,
   &GET_CATALOGUE,
+  &GET_STATE_DAMAGE,
   &GET_REF_CLIENT,
   &GET_REF_REVISION,
+  &GET_REF_DIGEST,
   &GET_REF_CHANGES,
   &LOG_SCREEN_ON,
   &LOG_SCREEN_OFF,
@@ -346,6 +352,8 @@ enum class ExitCode : int
   IMPORTS_UNRESOLVED = 222,  // owl:imports that could not be resolved
   FEDERATED_QUERY_DISABLED = 223,  // SPARQL SERVICE (federated query) is disabled
   UNKNOWN_NAME = 224,  // a query names an entity the reference does not know (node parameter strict_names)
+  NOT_DURABLE = 225,  // not durable: the state directory did not take the change (disk full, I/O error, read-only); nothing changed
+  CLIENT_LIMIT = 226,  // the client holds as many references or subscriptions as one client may
 };
 
 }  // namespace armor::contract

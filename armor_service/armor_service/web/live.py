@@ -5,15 +5,17 @@ The core announces each acknowledged change (issue 12's change events: reference
 client, directives, consistency) on the node's connection; CoreProcess hands each to
 ``LiveUpdates.on_event`` on its reader thread. A page needs to know *that* a reference changed
 (it then refetches what it shows), not each change: so the hub keeps only the latest revision
-and consistency per reference and sends every page that whole table, at most once per
-``COALESCE_S``. A page that reads slowly is sent the newest table when it is ready for one,
-never a queue of old ones: memory stays constant however fast the robot changes its knowledge.
+and consistency per reference, and how many directives the node answered on each (queries
+too: the recent-directives list moves with them), and sends every page that whole table, at
+most once per ``COALESCE_S``. A page that reads slowly is sent the newest table when it is
+ready for one, never a queue of old ones: memory stays constant however fast the robot
+changes its knowledge.
 """
 
 import asyncio
 import json
 import threading
-from typing import Any, Dict, Optional, Set
+from typing import Any, Dict, Iterable, Optional, Set
 
 # Changes reach a page well within a second, and a robot changing facts every few milliseconds
 # makes each open page refetch ten times a second at most (bench/web_view.py: what the pages
@@ -48,6 +50,10 @@ class LiveUpdates:
         self._lock = threading.Lock()
         self._references: Dict[str, Dict[str, Any]] = {}
         self._events = 0
+        # Directives the node answered per reference, queries and failures too: what the
+        # recent-directives list shows moves with them, not only with the revision.
+        self._answered: Dict[str, int] = {}
+        self._directives = 0
         self._scheduled = False
         self._pages: Set[PageChannel] = set()
         self._changed = asyncio.Event()
@@ -68,8 +74,25 @@ class LiveUpdates:
                     'client': event.get('client_name', ''),
                     'stamp_ns': event.get('stamp_ns'),
                 }
-            wake = not self._scheduled
-            self._scheduled = True
+            wake = self._schedule()
+        self._wake(wake)
+
+    def on_directives(self, references: Iterable[str]) -> None:
+        """Count directives the node answered (called on ROS callback threads: kept short)."""
+        with self._lock:
+            for reference in references:
+                self._answered[reference] = self._answered.get(reference, 0) + 1
+                self._directives += 1
+            wake = self._schedule()
+        self._wake(wake)
+
+    def _schedule(self) -> bool:
+        """Under the lock: whether the broadcaster needs waking for this news."""
+        wake = not self._scheduled
+        self._scheduled = True
+        return wake
+
+    def _wake(self, wake: bool) -> None:
         if wake and not self._loop.is_closed():
             self._loop.call_soon_threadsafe(self._changed.set)
 
@@ -81,6 +104,11 @@ class LiveUpdates:
             known = self._references.get(reference)
             return None if known is None else known['revision']
 
+    def answered(self) -> Any:
+        """What the recent-directives list is kept by: changes and directives answered so far."""
+        with self._lock:
+            return (self._events, self._directives)
+
     def consistent(self, reference: str) -> Optional[bool]:
         """A reference's consistency after its last change (None: no change seen yet)."""
         with self._lock:
@@ -90,7 +118,7 @@ class LiveUpdates:
     def table(self) -> str:
         with self._lock:
             return json.dumps({'type': 'revisions', 'events': self._events,
-                               'references': self._references})
+                               'references': self._references, 'answered': self._answered})
 
     def join(self) -> PageChannel:
         page = PageChannel()

@@ -15,6 +15,7 @@ Routes (all read-only; none changes an ontology):
   GET  /api/recent?reference=&limit=&all=    the last directives (all=1: the page's own too)
   POST /api/references/{ref}/dl              {"expression"}: QUERY IND DL and QUERY CLASS DL
   POST /api/references/{ref}/sparql          {"query"}: QUERY SPARQL FORMATTED
+  GET  /api/references/{ref}/scenes[/recent] the SIT plugin's learned scenes, last scenes
   GET  /api/live                             WebSocket: the table of revisions after each change
 
 Bound to the loopback interface (the default), it answers only requests addressed to a loopback
@@ -27,12 +28,13 @@ import ipaddress
 import json
 import pathlib
 import threading
-from typing import Any, Awaitable, Callable, Dict, Optional
+from typing import Any, Awaitable, Callable, Dict, List, Optional
 
 from aiohttp import web, WSMsgType
 from armor_service.core_process import CoreUnavailable
 from armor_service.web.live import LiveUpdates
 from armor_service.web.reads import CoreReads, SharedAnswers, ViewFailed, WEB_CLIENT
+from armor_service.web.scenes import SceneRoutes
 
 STATIC = pathlib.Path(__file__).resolve().parent / 'static'
 MAX_PAGES = 32
@@ -106,6 +108,10 @@ class WebView:
                                f'{outcome[0]}') from outcome[0]
         self._core.add_event_listener(self._on_event)
         return self.url
+
+    def directives_answered(self, references: List[str]) -> None:
+        """The node answered directives on these references (a name per directive)."""
+        self._live.on_directives(references)
 
     def stop(self) -> None:
         if self._thread is None or not self._thread.is_alive():
@@ -213,13 +219,21 @@ class _Routes:
         app.router.add_get(prefix + '/consistency', self.consistency)
         app.router.add_post(prefix + '/dl', self.dl_query)
         app.router.add_post(prefix + '/sparql', self.sparql)
+        SceneRoutes(self._json_lines).add_to(app, prefix)
 
     async def index(self, request: web.Request) -> web.StreamResponse:
         return web.FileResponse(STATIC / 'index.html')
 
     async def overview(self, request: web.Request) -> web.Response:
         return await self._shared(('overview',), self._live.version(), OVERVIEW_MAX_AGE_S,
-                                  lambda: self._reads.view({'name': 'overview'}))
+                                  self._overview_with_damage)
+
+    async def _overview_with_damage(self) -> Dict[str, Any]:
+        """Every reference's summary, and what the state directory lost or refuses (a banner)."""
+        overview = await self._reads.view({'name': 'overview'})
+        damage = await self._reads.directive('', 'GET', 'STATE', 'DAMAGE')
+        overview['state_damage'] = [json.loads(line) for line in damage.get('queried_objects', [])]
+        return overview
 
     async def recent(self, request: web.Request) -> web.Response:
         reference = request.query.get('reference', '')
@@ -227,7 +241,7 @@ class _Routes:
         limit = _integer(request, 'limit', 50)
         view = {'name': 'recent', 'reference': reference, 'limit': limit,
                 'exclude_clients': [] if everyone else [WEB_CLIENT]}
-        return await self._shared(('recent', reference, everyone, limit), self._live.version(),
+        return await self._shared(('recent', reference, everyone, limit), self._live.answered(),
                                   RECENT_MAX_AGE_S, lambda: self._reads.view(view))
 
     async def reference(self, request: web.Request) -> web.Response:
@@ -327,6 +341,16 @@ class _Routes:
         key = tuple(sorted((k, json.dumps(v)) for k, v in view.items()))
         return await self._shared(key, self._live.version(reference), REFERENCE_MAX_AGE_S,
                                   lambda: self._reads.view(view), reference)
+
+    async def _json_lines(self, reference: str, *words: str) -> web.Response:
+        """A QUERY whose answer lines are JSON objects, as {"items": [...]}, kept per revision."""
+        async def fetch() -> Dict[str, Any]:
+            answer = await self._reads.directive(reference, *words)
+            if not answer['success']:
+                raise ViewFailed(answer['exit_code'], answer['error_description'])
+            return {'items': [json.loads(line) for line in answer['queried_objects']]}
+        return await self._shared(('lines', reference, *words), self._live.version(reference),
+                                  REFERENCE_MAX_AGE_S, fetch, reference)
 
     async def _shared(self, key, version, max_age_s: float, fetch: Callable[[], Awaitable[Any]],
                       reference: Optional[str] = None) -> web.Response:

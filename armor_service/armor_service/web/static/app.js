@@ -7,7 +7,7 @@
 const TABS = ['graph', 'classes', 'individuals', 'query', 'recent'];
 const PAGE_SIZE = 50;
 const PALETTE = ['#4e79a7', '#f28e2b', '#59a14f', '#e15759', '#76b7b2', '#edc948', '#b07aa1',
-  '#ff9da7', '#9c755f', '#7f8c8d', '#2f6690', '#c0392b'];
+  '#ff9da7', '#9c755f', '#2f6690', '#c0392b', '#17becf'];
 // Above this many nodes even the layout worker would take minutes: a grid instead.
 const FORCE_LAYOUT_MAX_NODES = 2000;
 
@@ -16,6 +16,7 @@ const state = {
   selected: null,
   tab: 'graph',
   revisions: null,
+  answered: {},        // directives the node answered, by reference (the recent list follows them)
   classIri: null,
   individualIri: null,
   individualSearch: '',
@@ -24,6 +25,7 @@ const state = {
   closedClasses: new Set(),
   graphChoice: null,   // {properties: [iri] | null for all, class, focus, limit}
   properties: [],      // the selected reference's object properties
+  classIndex: new Map(),  // its classes' places in their list sorted by name (colourOf)
   fetchedAt: 0,
 };
 
@@ -89,12 +91,27 @@ function clock(ms) {
   return at.toLocaleTimeString([], {hour12: false}) + '.' + String(at.getMilliseconds()).padStart(3, '0');
 }
 
-// A type keeps the colour it was first given for as long as the page is open.
-const colours = new Map();
+/**
+ * A type's colour: from the class's place among the reference's classes sorted by name, not
+ * from what happens to be on screen, so that it is the same on every page, in every state of
+ * the individuals and in the README's picture. The first classes take the palette's colours,
+ * all different; beyond it, hues a golden angle apart. A label of several types takes the
+ * first one's; no class (owl:Thing) is grey.
+ */
+function colourOf(types) {
+  const index = state.classIndex.get(types.split(', ')[0]);
+  if (index === undefined) return '#98a2b3';
+  if (index < PALETTE.length) return PALETTE[index];
+  return `hsl(${Math.round((index * 137.508) % 360)}, 55%, ${[45, 32, 60][index % 3]}%)`;
+}
 
-function colourOf(name) {
-  if (!colours.has(name)) colours.set(name, PALETTE[colours.size % PALETTE.length]);
-  return colours.get(name);
+/** The reference's classes by name, sorted: the colours of the graph's types (colourOf). */
+async function loadClassIndex(shown) {
+  const hierarchy = await api(referencePath('/classes'));
+  const names = [...new Set(hierarchy.classes.map((owlClass) => owlClass.name))].sort();
+  // A type the hierarchy leaves out gets a place after them, and is not asked for again.
+  names.push(...[...shown].filter((name) => !names.includes(name)).sort());
+  state.classIndex = new Map(names.map((name, index) => [name, index]));
 }
 
 /** Axioms as the core writes them, with <full IRIs> shortened to their names for reading. */
@@ -160,6 +177,7 @@ const overviewRefresher = new Refresher(async () => {
   const overview = await api('/api/overview');
   state.overview = overview.references;
   state.fetchedAt = performance.now();
+  renderStateDamage(overview.state_damage || []);
   renderReferenceList();
   if (!state.selected && state.overview.length) {
     const wanted = decodeURIComponent(location.hash.slice(2).split('/')[0] || '');
@@ -174,6 +192,16 @@ const overviewRefresher = new Refresher(async () => {
   }
   renderSummary();
 });
+
+// What GET STATE DAMAGE answers: restores that lost something, references refusing changes.
+function renderStateDamage(damage) {
+  const banner = $('#state-damage');
+  banner.hidden = !damage.length;
+  fill($('#state-damage-list'), ...damage.map((d) => el('li', {text: d.refusing_changes
+    ? `"${d.reference}": changes refused since ${d.since} (not durable: ${d.refusing_changes})`
+    : `"${d.reference}" ${d.restored ? `restored up to revision ${d.revision}` : 'NOT restored'}`
+      + ` (${d.when}): ${(d.problems || []).join('; ')}. Set aside in ${d.kept_in}`})));
+}
 
 function summaryOf(name) {
   return state.overview.find((r) => r.name === name);
@@ -271,6 +299,7 @@ function select(name, tab) {
     state.closedClasses = new Set();
     state.graphChoice = null;
     state.properties = [];
+    state.classIndex = new Map();
     fill($('#class-detail'), el('p', {className: 'muted', text: 'Choose a class.'}));
     fill($('#individual-detail'), el('p', {className: 'muted', text: 'Choose an individual.'}));
     $('#inconsistency').hidden = true;
@@ -312,6 +341,24 @@ layoutWorker.onmessage = (event) => {
   graph.fit(undefined, 30);
   layoutSettled = true;
 };
+
+// Labels' size on screen, in pixels, whatever the zoom down to LABEL_MIN_ZOOM (below it they
+// shrink with the graph, and vanish under min-zoomed-font-size, rather than hide it).
+const LABEL_PX = {node: 14, edge: 12};
+const LABEL_MIN_ZOOM = 0.4;
+let labelFrame = 0;
+
+function keepLabelsReadable() {
+  if (labelFrame) return;
+  labelFrame = requestAnimationFrame(() => {
+    labelFrame = 0;
+    const scale = 1 / Math.max(graph.zoom(), LABEL_MIN_ZOOM);
+    graph.style()
+      .selector('node').style({'font-size': LABEL_PX.node * scale, 'text-margin-y': 4 * scale})
+      .selector('edge').style({'font-size': LABEL_PX.edge * scale, 'text-background-padding': 2 * scale})
+      .update();
+  });
+}
 
 /** Lays the graph out again, from where its nodes are unless `randomize`. */
 function layOut(randomize) {
@@ -365,6 +412,15 @@ const graphRefresher = new Refresher(async () => {
     return;
   }
   if (name !== state.selected) return;
+  const shown = new Set(data.nodes.filter((node) => node.types.length).map((node) => node.types[0].name));
+  if ([...shown].some((type) => !state.classIndex.has(type))) {
+    try {
+      await loadClassIndex(shown);  // first time, or a class new to the schema
+    } catch (error) {
+      // grey nodes until the next refresh: the graph itself is fine
+    }
+    if (name !== state.selected) return;
+  }
   renderGraph(data);
 });
 
@@ -403,17 +459,24 @@ function renderGraph(data) {
       style: [
         {selector: 'node', style: {
           'background-color': 'data(colour)', 'label': 'data(label)', 'text-wrap': 'wrap',
-          'font-size': 20, 'text-valign': 'bottom', 'text-margin-y': 4, 'width': 40, 'height': 40,
-          'color': '#1d2330', 'text-background-color': '#ffffff', 'text-background-opacity': 0.7,
-          'min-zoomed-font-size': 7}},
+          'font-size': LABEL_PX.node, 'text-valign': 'bottom', 'text-margin-y': 4, 'width': 40,
+          'height': 40, 'color': '#1d2330', 'text-background-color': '#ffffff',
+          'text-background-opacity': 0.7, 'min-zoomed-font-size': 7}},
+        // Edge labels level and on a background of their own, beside the line rather than on it.
         {selector: 'edge', style: {
           'width': 3, 'line-color': '#98a2b3', 'line-style': 'data(line)', 'curve-style': 'bezier',
+          // Links both ways between two individuals bow apart far enough for both labels.
+          'control-point-step-size': 70,
           'target-arrow-shape': 'data(arrow)', 'target-arrow-color': '#98a2b3', 'label': 'data(label)',
-          'font-size': 14, 'color': '#667085', 'text-rotation': 'autorotate', 'min-zoomed-font-size': 7}},
+          'font-size': LABEL_PX.edge, 'color': '#344054', 'text-rotation': 'none',
+          'text-background-color': '#ffffff', 'text-background-opacity': 0.85,
+          'text-background-shape': 'roundrectangle', 'text-background-padding': 2,
+          'min-zoomed-font-size': 7}},
         {selector: 'node:selected', style: {'border-width': 3, 'border-color': '#2458b3'}},
       ],
     });
     graph.on('tap', 'node', (event) => showIndividual(event.target.id()));
+    graph.on('zoom', keepLabelsReadable);
   }
   // Links that come and go (someone moves to another room) leave the map where it is; only
   // individuals that appear or go make a new layout, started from the current positions.
@@ -638,8 +701,10 @@ async function askDl(expression) {
   fill(result, el('p', {className: 'muted', text: 'asking…'}));
   try {
     const answer = await postJson(referencePath('/dl'), {expression});
+    // A success may say something: a word of the expression the reference does not know.
     const part = (title, reply, kind) => [el('h3', {text: title}), reply.success
-      ? entityList(reply.items.map((item) => ({iri: item.replace(/^<|>$/g, ''), name: shortName(item)})), kind)
+      ? [reply.description ? el('p', {className: 'note', text: reply.description}) : null,
+        entityList(reply.items.map((item) => ({iri: item.replace(/^<|>$/g, ''), name: shortName(item)})), kind)]
       : directiveFailure(reply)];
     fill(result, ...part('Instances', answer.instances, 'individual'),
       ...part('Subclasses', answer.subclasses, 'class'));
@@ -728,7 +793,14 @@ function connectLive() {
 /** The node's table of revisions: refetch what shows a reference whose revision moved. */
 function onRevisions(table) {
   const before = state.revisions;
+  const answeredBefore = state.answered;
   state.revisions = table.references;
+  state.answered = table.answered || {};
+  // Queries and refused directives move no revision, yet belong on the recent-directives list.
+  if (before !== null && state.tab === 'recent'
+      && answeredBefore[state.selected] !== state.answered[state.selected]) {
+    recentRefresher.request();
+  }
   if (before === null) {
     // First table since (re)connecting: anything may have changed meanwhile.
     overviewRefresher.request();
@@ -828,7 +900,6 @@ function wire() {
     runSparql($('#sparql-query').value);
   });
   $('#recent-all').addEventListener('change', () => recentRefresher.request());
-  $('#recent-refresh').addEventListener('click', () => recentRefresher.request());
   window.addEventListener('hashchange', () => {
     const [name, tab] = location.hash.slice(2).split('/').map(decodeURIComponent);
     if (summaryOf(name) && (name !== state.selected || (TABS.includes(tab) && tab !== state.tab))) {

@@ -13,7 +13,7 @@ import org.semanticweb.owlapi.model.OWLClass;
 /**
  * A tiny plugin of the knowledge core (docs/extending.md): a command that needs no reference,
  * one that changes a reference and one that asks the reasoner. Built into a jar with
- * build.sh; a node loads it from a directory of its plugin_dirs parameter.
+ * examples/plugins/build.sh; a node loads it from a directory of its plugin_dirs parameter.
  */
 public final class HelloCommands implements CommandGroup {
     @Override

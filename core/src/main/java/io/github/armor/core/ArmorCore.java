@@ -67,10 +67,15 @@ public final class ArmorCore implements AutoCloseable {
 
     /** A core answering the commands of {@code commands} (the built-in groups plus plugins'). */
     public ArmorCore(CoreConfig config, CommandTable commands) {
+        this(config, commands, config.durability().stateDir() == null ? null : new StateStore(config.durability()));
+    }
+
+    /** A core keeping its references in {@code state} (null: kept nowhere). */
+    public ArmorCore(CoreConfig config, CommandTable commands, StateStore state) {
         this.config = config;
         this.commands = commands;
         this.rendering = new Rendering(config.fullEntityIri());
-        this.state = config.durability().stateDir() == null ? null : new StateStore(config.durability());
+        this.state = state;
     }
 
     /**
@@ -88,11 +93,12 @@ public final class ArmorCore implements AutoCloseable {
                         config.reasonerTimeoutMs());
                 reference.setMountedBy(restorable.mountedBy());
                 references.register(reference);
-                restorable.records().forEach(this::replay);
+                List<String> failures = new ArrayList<>();
+                restorable.records().forEach(record -> failures.addAll(replay(record)));
                 reference.setRevision(restorable.revision());
                 reference.changeHistory().addAll(restorable.history());
                 reference.synchroniseReasoner();
-                state.adopt(restorable);
+                state.adopt(restorable, restorable.revision(), failures);
                 LOG.info("restored reference '{}' from the state directory {}: {} axioms, {} individuals,"
                         + " {} journal record(s) of earlier sessions replayed, in {} ms", restorable.name(),
                         config.durability().stateDir(), reference.ontology().getAxiomCount(),
@@ -100,23 +106,28 @@ public final class ArmorCore implements AutoCloseable {
                         (System.nanoTime() - start) / 1_000_000);
             } catch (RuntimeException e) {
                 LOG.error("could not restore reference '{}'", restorable.name(), e);
+                references.find(restorable.name()).ifPresent(references::remove);
+                state.notRestored(restorable, "restoring it failed: " + e);
             }
         }
     }
 
-    private void replay(AcknowledgedChange record) {
+    /** Replays one journal record; what failed, described (a restored state that differs must say so). */
+    private List<String> replay(AcknowledgedChange record) {
+        List<String> failures = new ArrayList<>();
         replaying.set(true);
         try {
             for (Directive directive : record.directives()) {
                 Response response = run(directive, null);
                 if (!response.success()) {
-                    LOG.warn("replaying {} failed: {} {}", directive.describe(), response.exitCode(),
-                            response.errorDescription());
+                    failures.add("replaying revision " + record.revision() + " (" + directive.describe()
+                            + ") failed: " + response.exitCode() + " " + response.errorDescription());
                 }
             }
         } finally {
             replaying.set(false);
         }
+        return failures;
     }
 
     /** Finishes writing state and releases the state directory; the core answers nothing afterwards. */
@@ -224,9 +235,18 @@ public final class ArmorCore implements AutoCloseable {
     private ListResponse runList(List<Directive> directives, ListState list) {
         List<Response> responses = new ArrayList<>();
         int failed = -1;
+        long answered = 0;
         for (int i = 0; i < directives.size() && failed < 0; i++) {
             list.position = i;
             Response response = run(directives.get(i), list);
+            try {
+                answered = SizeLimits.addAnswer(answered, response);
+            } catch (ArmorException e) {
+                // No answer of it can reach the client: the whole list is refused, and undone.
+                list.rollback();
+                return new ListResponse(false, false, directives.stream()
+                        .map(d -> Response.failure(e, consistencyOf(d))).toList());
+            }
             responses.add(response);
             if (!response.success()) {
                 failed = i;
@@ -239,8 +259,9 @@ public final class ArmorCore implements AutoCloseable {
                 list.rollback();
                 List<Response> undone = new ArrayList<>();
                 for (Directive directive : directives) {
-                    undone.add(rolledBack("undone because the list could not be journaled: " + e.getMessage(),
-                            directive));
+                    // The list's own cause (not durable), not 212: none of its directives failed.
+                    undone.add(Response.failure(new ArmorException(e.exitCode(), e.getMessage() + "; the whole list"
+                            + " was undone"), consistencyOf(directive)));
                 }
                 return new ListResponse(false, false, undone);
             }
@@ -324,8 +345,15 @@ public final class ArmorCore implements AutoCloseable {
                 CommandContext context = context(directive, target);
                 Response underLock = holdFor(list, target).locked(config.lockWaitMs(), reference -> {
                     releaseExpiredMount(reference);
+                    if (!replaying.get() && spec.kind() == CommandKind.DROPPING && state != null) {
+                        // Before the reference goes: a DROP the disk does not take is refused.
+                        state.dropped(reference);
+                    }
                     if (spec.mountChecked()) {
-                        checkMount(reference, directive);
+                        if (!replaying.get()) {
+                            // A replayed record was acknowledged: it passed this check when it was made.
+                            checkMount(reference, directive);
+                        }
                         if (list != null) {
                             list.enrol(reference);
                         }
@@ -338,9 +366,6 @@ public final class ArmorCore implements AutoCloseable {
                         list.toJournal.computeIfAbsent(reference, r -> new ArrayList<>()).add(directive);
                     }
                     if (!replaying.get() && spec.kind() == CommandKind.DROPPING) {
-                        if (state != null) {
-                            state.dropped(reference);
-                        }
                         // A DROP is final even inside a list (no rollback brings a reference back).
                         events.publish(ChangeEvent.now(reference.name(), reference.revision() + 1, List.of(directive),
                                 reference.isConsistent()));
@@ -360,6 +385,7 @@ public final class ArmorCore implements AutoCloseable {
     private Response runUndoable(CommandSpec spec, CommandContext context, Reference reference, ListState list) {
         Directive directive = context.directive();
         boolean single = list == null && spec.mountChecked();
+        String holderBefore = reference.mountedBy();
         if (single) {
             reference.beginTransaction();
         }
@@ -382,6 +408,8 @@ public final class ArmorCore implements AutoCloseable {
             if (single) {
                 reference.rollbackTransaction();
             }
+            // A MOUNT or UNMOUNT the journal refused is undone too.
+            reference.setMountedBy(holderBefore);
             throw e;
         } finally {
             if (single) {
@@ -438,7 +466,7 @@ public final class ArmorCore implements AutoCloseable {
 
     private CommandContext context(Directive directive, Reference reference) {
         return new CommandContext(directive, reference, references, config, rendering, directiveLog, replaying.get(),
-                commands);
+                commands, state == null ? List::of : state::damage);
     }
 
     private void checkMount(Reference reference, Directive directive) {
@@ -500,7 +528,7 @@ public final class ArmorCore implements AutoCloseable {
             toJournal.forEach((reference, directives) -> changes.put(reference,
                     new AcknowledgedChange(reference.revision() + 1, directives)));
             if (ArmorCore.this.state != null) {
-                changes.forEach(ArmorCore.this.state::record);
+                ArmorCore.this.state.recordAll(changes);
             }
             changes.forEach((reference, change) -> {
                 reference.acknowledge(change);
@@ -538,7 +566,12 @@ public final class ArmorCore implements AutoCloseable {
             for (Reference reference : created) {
                 references.remove(reference);
                 if (ArmorCore.this.state != null) {
-                    ArmorCore.this.state.dropped(reference);
+                    try {
+                        ArmorCore.this.state.dropped(reference);
+                    } catch (ArmorException e) {
+                        LOG.error("the state of '{}', made by a list that failed, stays: {}", reference.name(),
+                                e.getMessage());
+                    }
                 }
             }
         }

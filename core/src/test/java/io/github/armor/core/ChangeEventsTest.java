@@ -222,7 +222,7 @@ class ChangeEventsTest {
 
     private long checkpointRevision() throws Exception {
         String meta = Files.readString(stateDir.resolve("refs").resolve("map").resolve("meta.json"));
-        var json = com.google.gson.JsonParser.parseString(meta).getAsJsonObject();
+        var json = com.google.gson.JsonParser.parseString(meta).getAsJsonObject().getAsJsonObject("meta");
         return json.has("checkpoint_revision") ? json.get("checkpoint_revision").getAsLong() : 0;
     }
 }

@@ -140,9 +140,25 @@ class ChangeHistoryTest {
             ok(core, "c", "map", "ADD IND", "i" + i);
         }
         Response answer = ok(core, "c", "", "GET REF CHANGES", "map", "0");
-        assertEquals(ChangeHistory.MAX_CHANGES, answer.queriedObjects().size());
         assertTrue(answer.errorDescription().contains("from revision 1 to 5 are no longer kept"),
                 answer.errorDescription());
-        assertEquals("", ok(core, "c", "", "GET REF CHANGES", "map", "5").errorDescription());
+        // Every kept change, one bounded answer after the other, each saying where to go on.
+        List<Long> revisions = new java.util.ArrayList<>();
+        while (true) {
+            List<String> page = answer.queriedObjects();
+            assertTrue(page.size() <= ChangeHistory.PAGE_CHANGES, page.size() + " changes in one answer");
+            page.forEach(text -> revisions.add(JsonParser.parseString(text).getAsJsonObject().get("revision")
+                    .getAsLong()));
+            int more = answer.errorDescription().indexOf(ChangeHistory.MORE_AFTER);
+            if (more < 0) {
+                break;
+            }
+            long last = revisions.get(revisions.size() - 1);
+            assertTrue(answer.errorDescription().startsWith(ChangeHistory.MORE_AFTER + last, more),
+                    answer.errorDescription());
+            answer = ok(core, "c", "", "GET REF CHANGES", "map", Long.toString(last));
+        }
+        assertEquals(java.util.stream.LongStream.rangeClosed(6, made).boxed().toList(), revisions);
+        assertEquals("", ok(core, "c", "", "GET REF CHANGES", "map", Long.toString(made - 10)).errorDescription());
     }
 }

@@ -23,7 +23,8 @@ final class CoreFixture {
         dirs[0] = ONTOLOGIES;
         dirs[1] = TEST_ONTOLOGIES;
         System.arraycopy(extraDirs, 0, dirs, 2, extraDirs.length);
-        core = new ArmorCore(CoreConfig.defaults(dirs));
+        // The test's own folders are read and written; the shipped ontologies only read.
+        core = new ArmorCore(CoreConfig.defaults(dirs).withWriting(CoreConfig.Writing.into(extraDirs)));
     }
 
     CoreFixture(CoreConfig config) {

@@ -26,6 +26,14 @@ class DispatchTest {
         return new CoreFixture(scratch);
     }
 
+    /** A core with strict_names on, robotics.owl loaded as "map". */
+    private static CoreFixture strictNames() {
+        CoreFixture strict = new CoreFixture(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES), false,
+                30_000, 0, 0, CoreConfig.Durability.NONE, new CoreConfig.Safeguards(30_000, false, false, true)));
+        strict.loadRobotics("map", "HERMIT", false);
+        return strict;
+    }
+
     @Test
     void missingNamesAndUnknownCommandsGetTheirCodes() {
         CoreFixture f = fixture();
@@ -87,15 +95,63 @@ class DispatchTest {
         assertEquals("new to the reference: individual 'alise' (did you mean alice?)", added.errorDescription());
         assertEquals("", f.ok("map", "QUERY IND CLASS", "Room").errorDescription());
 
-        CoreFixture strict = new CoreFixture(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES), false,
-                30_000, 0, 0, CoreConfig.Durability.NONE, new CoreConfig.Safeguards(30_000, false, false, true)));
-        strict.loadRobotics("map", "HERMIT", false);
+        CoreFixture strict = strictNames();
         Response refused = strict.run("map", "QUERY IND CLASS", "Rooom");
         assertFails(refused, 224);
         assertTrue(refused.errorDescription().contains("class 'Rooom' (did you mean Room?)"), refused.errorDescription());
         strict.ok("map", "ADD IND CLASS", "bob", "Person");
         assertEquals(List.of(CoreFixture.iri("alice"), CoreFixture.iri("bob")),
                 strict.ok("map", "QUERY IND CLASS", "Person").queriedObjects());
+    }
+
+    /** Issue 35 item 2: a class expression's unknown words are named, with the known names closest to them. */
+    @Test
+    void classExpressionsNameTheWordsTheReferenceDoesNotKnow() {
+        CoreFixture f = fixture();
+        f.loadRobotics("map", "HERMIT", false);
+        Response misspeltClass = f.ok("map", "QUERY IND DL", "Agent and (isIn some Rom)");
+        assertEquals(List.of(), misspeltClass.queriedObjects());
+        assertEquals("new to the reference: class 'Rom' (did you mean Room?)", misspeltClass.errorDescription());
+        assertEquals("new to the reference: class 'Agnt' (did you mean Agent?)",
+                f.ok("map", "QUERY CLASS DL", "Agnt").errorDescription());
+        assertEquals("", f.ok("map", "QUERY IND DL", "Agent and (isIn some Room)").errorDescription());
+
+        Response misspeltProperty = f.run("map", "QUERY IND DL", "Agent and (isInn some Room)");
+        assertFails(misspeltProperty, 208);
+        assertTrue(misspeltProperty.errorDescription().startsWith("cannot parse 'Agent and (isInn some Room)': the "
+                + "reference does not know object property 'isInn' (did you mean isIn?); Encountered some"),
+                misspeltProperty.errorDescription());
+        String individual = f.run("map", "QUERY IND DL", "isIn value kitchn").errorDescription();
+        assertTrue(individual.contains("does not know individual 'kitchn' (did you mean kitchen?)"), individual);
+        String listed = f.run("map", "QUERY IND DL", "{robot1, alise}").errorDescription();
+        assertTrue(listed.contains("does not know individual 'alise' (did you mean alice?)"), listed);
+        String noSuggestion = f.run("map", "QUERY IND DL", "zzzzqq some Room").errorDescription();
+        assertTrue(noSuggestion.contains("does not know object property 'zzzzqq';"), noSuggestion);
+
+        CoreFixture strict = strictNames();
+        Response refused = strict.run("map", "QUERY IND DL", "Agent and (isIn some Rom)");
+        assertFails(refused, 224);
+        assertTrue(refused.errorDescription().contains("class 'Rom' (did you mean Room?)"), refused.errorDescription());
+    }
+
+    /** Issue 35 item 1: a relative path says which folder it would have meant; a missing file names the path tried. */
+    @Test
+    void relativePathsAreRefusedAndMissingFilesNamedInFull() {
+        CoreFixture f = fixture();
+        Response relative = f.run("a", "LOAD FILE", "robotics.owl", "", "false", "HERMIT", "false");
+        assertFails(relative, 213);
+        assertTrue(relative.errorDescription().startsWith("relative path 'robotics.owl' refused: send an absolute path "
+                + "(the node would have taken it as " + Path.of("robotics.owl").toAbsolutePath()),
+                relative.errorDescription());
+        Path missing = scratch.resolve("missing.owl");
+        Response absent = f.run("a", "LOAD FILE", missing.toString(), "", "false", "HERMIT", "false");
+        assertFails(absent, 209);
+        assertTrue(absent.errorDescription().contains("no such file: " + missing.toAbsolutePath()),
+                absent.errorDescription());
+        f.loadRobotics("map", "HERMIT", false);
+        assertFails(f.run("map", "SAVE", "saved.owl"), 213);
+        assertFails(f.run("", "LOG FILE ON", "directives.log"), 213);
+        assertFalse(Files.exists(Path.of("saved.owl")) || Files.exists(Path.of("directives.log")));
     }
 
     @Test

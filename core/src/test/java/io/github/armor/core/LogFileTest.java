@@ -2,6 +2,7 @@
 package io.github.armor.core;
 
 import static io.github.armor.core.CoreFixture.assertFails;
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -40,7 +41,7 @@ class LogFileTest {
         Response refused = logTo(f, fifo);
         assertFails(refused, 209);
         assertTrue(refused.errorDescription().contains("regular file"), refused.errorDescription());
-        assertFails(logTo(f, scratch), 209);
+        assertFails(logTo(f, Files.createDirectory(scratch.resolve("folder"))), 209);
     }
 
     @Test
@@ -65,6 +66,21 @@ class LogFileTest {
             Thread.sleep(20);
         }
         f.core.execute(Directive.of("c", "", "LOG", "FILE", "OFF"));
+    }
+
+    @Test
+    void oneDirectiveIsOneLineWhateverItHolds() throws Exception {
+        CoreFixture f = new CoreFixture(scratch);
+        Path log = scratch.resolve("logs/directives.log");
+        assertTrue(logTo(f, log).success());
+        f.core.execute(Directive.of("evil\nclient", "nowhere", "ADD", "IND", "CLASS",
+                "x\n$(touch /tmp/pwned)\r\u001b[2K\u2028\\n", "Robot"));
+        f.core.execute(Directive.of("c", "", "LOG", "FILE", "OFF"));
+        List<String> lines = Files.readAllLines(log);
+        assertEquals(2, lines.size(), lines.toString());
+        String line = lines.get(1);
+        assertTrue(line.contains("[evil\\nclient]") && line.contains("x\\n$(touch /tmp/pwned)\\r\\u001b[2K"
+                + "\\u2028\\\\n"), line);
     }
 
     @Test

@@ -44,7 +44,8 @@ class ReasonerTimeLimitTest {
 
     private CoreFixture core(long reasonerTimeoutMs) {
         CoreFixture f = new CoreFixture(new CoreConfig(true, "PELLET", List.of(CoreFixture.ONTOLOGIES, scratch),
-                false, 30_000, reasonerTimeoutMs, 0, CoreConfig.Durability.NONE));
+                false, 30_000, reasonerTimeoutMs, 0, CoreConfig.Durability.NONE).withWriting(
+                CoreConfig.Writing.into(scratch)));
         f.ok("map", "LOAD FILE", ROBOTICS, "http://www.example.org/robotics", "false", BLOCKING, "false");
         return f;
     }

@@ -92,6 +92,12 @@ class ReferenceViewsTest {
         assertTrue(other.get("buffered_manipulation").getAsBoolean() && other.get("buffered_reasoner").getAsBoolean());
         assertEquals("alice_client", other.get("mounted_by").getAsString());
         assertFalse(other.has("lease_left_s"), "mounts never expire with mount_lease_s = 0");
+        // How each is reasoned on (issue 28 item 4): robotics.owl in modules; a buffered reasoner on the whole.
+        assertTrue(map.get("reasoning").getAsString().startsWith("in modules: "), map.get("reasoning").toString());
+        assertFalse(map.get("reasoned_on_whole").getAsBoolean());
+        assertTrue(other.get("reasoned_on_whole").getAsBoolean());
+        assertTrue(other.get("reasoning").getAsString().startsWith("on the whole ontology: buffered reasoner"),
+                other.get("reasoning").toString());
 
         fixture.ok("map", "ADD IND CLASS", "carol", "Person");
         assertEquals(6, byName(view("{\"name\": \"overview\"}").getAsJsonArray("references"), "map")

@@ -149,6 +149,23 @@ class SubscriptionsTest {
         assertEquals(List.of(iri("robot2")), back.added());
     }
 
+    /** Issue 35 item 8: once the reference is consistent again, its subscriber hears so, even with the same answer. */
+    @Test
+    void theEndOfAnInconsistencyIsAnnouncedEvenWhenTheAnswerIsUnchanged() throws Exception {
+        subscribe("robots", OCCUPIED, "Robot");
+        next();
+        fixture.ok("map", "ADD IND CLASS", "kitchen", "Corridor");
+        assertEquals(217, next().exitCode());
+        fixture.ok("map", "REMOVE IND CLASS", "kitchen", "Corridor");
+        AnswerEvent repaired = next();
+        assertEquals(0, repaired.exitCode());
+        assertTrue(repaired.added().isEmpty() && repaired.removed().isEmpty());
+        assertEquals(2, repaired.revision());
+        fixture.ok("map", "ADD IND CLASS", "robot2", "Robot");
+        assertEquals(List.of(iri("robot2")), next().added());
+        noMore();
+    }
+
     @Test
     void burstsOfChangesLoseAndRepeatNothingAndTheLastAnswerHoldsAtTheLastRevision() throws Exception {
         subscribe("robots", OCCUPIED, "Robot");

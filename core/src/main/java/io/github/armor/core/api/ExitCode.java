@@ -31,7 +31,10 @@ public enum ExitCode {
     TOO_LARGE(221, "an argument, directive, list or answer exceeds its size limit"),
     IMPORTS_UNRESOLVED(222, "owl:imports that could not be resolved"),
     FEDERATED_QUERY_DISABLED(223, "SPARQL SERVICE (federated query) is disabled"),
-    UNKNOWN_NAME(224, "a query names an entity the reference does not know (node parameter strict_names)");
+    UNKNOWN_NAME(224, "a query names an entity the reference does not know (node parameter strict_names)"),
+    NOT_DURABLE(225, "not durable: the state directory did not take the change (disk full, I/O error,"
+            + " read-only); nothing changed"),
+    CLIENT_LIMIT(226, "the client holds as many references or subscriptions as one client may");
 
     private final int code;
     private final String meaning;

@@ -21,8 +21,16 @@ public enum Setting {
     FULL_ENTITY_IRI("full_entity_iri", Type.BOOLEAN, true,
             "answer entities as full IRIs in angle brackets (true) or as short names (false)"),
     ALLOWED_DIRS("allowed_dirs", Type.STRING_ARRAY, List.of(),
-            "LOAD FILE, SAVE and LOG FILE paths, and every document an owl:imports resolves to, must lie inside"
-                    + " these"),
+            "what a client may make the core read: LOAD FILE paths, PDDL mapping files and every document an"
+                    + " owl:imports resolves to must lie inside these (never state_dir, nor a hidden file or folder"
+                    + " below them)"),
+    WRITE_DIRS("write_dirs", Type.STRING_ARRAY, List.of(),
+            "what a client may make the core write: SAVE, SAVE INFERENCE, SAVE PDDL PROBLEM and LOG FILE ON paths"
+                    + " must lie inside these; never hidden paths, files directly in the home, working or temp"
+                    + " directory, the installation, plugin_dirs or state_dir (docs/security.md)"),
+    PROTECTED_DIRS("protected_dirs", Type.STRING_ARRAY, List.of(),
+            "more directories no directive may write into, besides those never written whatever the settings"
+                    + " say (docs/security.md)"),
     WEB_LOADING("web_loading", Type.BOOLEAN, false,
             "allow LOAD WEB and owl:imports from the web; off, the core opens no network connection"),
     IGNORE_MISSING_IMPORTS("ignore_missing_imports", Type.BOOLEAN, false,
@@ -37,8 +45,13 @@ public enum Setting {
                     + " (other commands create it, as in ARMOR)"),
     LOCK_WAIT_MS("lock_wait_ms", Type.INTEGER, 30_000L,
             "longest wait for a reference another directive is using (then 211, timeout=true)"),
-    REASONER_TIMEOUT_MS("reasoner_timeout_ms", Type.INTEGER, 0L,
+    // As long as a directive waits for a busy reference (lock_wait_ms): no question holds a
+    // reference for longer than others are willing to wait for it (docs/security.md).
+    REASONER_TIMEOUT_MS("reasoner_timeout_ms", Type.INTEGER, 30_000L,
             "time limit of one directive's reasoner work (then 211, timeout=true, within 1 s more) (0 = none)"),
+    REFERENCES_PER_CLIENT("references_per_client", Type.INTEGER, 100L,
+            "most references one client_name may have made (LOAD, CREATE) and not dropped; then 226 (0 = no"
+                    + " limit)"),
     MOUNT_LEASE_S("mount_lease_s", Type.INTEGER, 0L,
             "release a mount whose holder sent nothing for this long (0 = never)"),
     STATE_DIR("state_dir", Type.STRING, "", "journals and checkpoints of every reference"),

@@ -22,6 +22,17 @@ public final class SizeLimits {
     public static final int LIST_BYTES = 8 << 20;
     /** The rows of one SPARQL answer, rendered. */
     public static final int ANSWER_BYTES = 32 << 20;
+    /**
+     * A frame between the node and the core, either way (armor_service/wire.py reads no larger
+     * one): every answer, a list's answers together included, must fit in one.
+     */
+    public static final int FRAME_BYTES = 256 << 20;
+    // What a frame holds besides the responses: its id, the list's own fields.
+    private static final int FRAME_MARGIN = 64 << 10;
+    // A response's field names and values besides its strings, and each string's quotes and comma.
+    private static final int RESPONSE_OVERHEAD = 160;
+    private static final int STRING_OVERHEAD = 3;
+    private static final int ITEM_OVERHEAD = 24;
 
     private SizeLimits() {}
 
@@ -65,6 +76,51 @@ public final class SizeLimits {
         if (total > LIST_BYTES) {
             throw tooLarge("the list is " + size(total) + " in all; the limit is " + size(LIST_BYTES) + " per list");
         }
+    }
+
+    /**
+     * Refuses what the answers of a list add up to once they outgrow a frame, so that the list is
+     * answered 221 (and undone) instead of a frame the node cannot read.
+     *
+     * @param answered the frame bytes of the list's earlier answers
+     * @return the frame bytes of its answers with {@code response}
+     */
+    public static long addAnswer(long answered, Response response) {
+        long total = answered + frameBytes(response);
+        if (total > FRAME_BYTES - FRAME_MARGIN) {
+            throw tooLarge("the answers of this list come to more than " + size(FRAME_BYTES - FRAME_MARGIN)
+                    + ", what one frame from the core to the node carries (" + size(FRAME_BYTES)
+                    + "); ask in smaller lists");
+        }
+        return total;
+    }
+
+    /** How many bytes a response takes in a frame (JSON-escaped UTF-8), counted without encoding it. */
+    public static long frameBytes(Response response) {
+        long bytes = RESPONSE_OVERHEAD + jsonBytes(response.errorDescription());
+        for (String object : response.queriedObjects()) {
+            bytes += STRING_OVERHEAD + jsonBytes(object);
+        }
+        for (Response.QueryItem item : response.sparqlQueriedObjects()) {
+            bytes += ITEM_OVERHEAD + jsonBytes(item.key()) + jsonBytes(item.value());
+        }
+        return bytes;
+    }
+
+    /** The bytes of {@code text} as a JSON string's content: UTF-8, escapes counted as written. */
+    static long jsonBytes(String text) {
+        long bytes = 0;
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (c == '"' || c == '\\' || c == '\n' || c == '\r' || c == '\t' || c == '\b' || c == '\f') {
+                bytes += 2;
+            } else if (c < 0x20 || c == '\u2028' || c == '\u2029') {
+                bytes += 6;
+            } else {
+                bytes += charBytes(text, i);
+            }
+        }
+        return bytes;
     }
 
     /** The UTF-8 size of {@code text}, counted without encoding it. */

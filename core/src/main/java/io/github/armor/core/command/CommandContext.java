@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.function.Supplier;
 import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLClassExpression;
 import org.semanticweb.owlapi.model.OWLDataFactory;
 import org.semanticweb.owlapi.model.OWLDataProperty;
 import org.semanticweb.owlapi.model.OWLEntity;
@@ -31,12 +32,13 @@ public final class CommandContext {
     private final DirectiveLog log;
     private final boolean replaying;
     private final CommandTable commands;
+    private final Supplier<List<String>> stateDamage;
     private Supplier<Response> afterRelease;
     private final List<String> unknownNames = new ArrayList<>();
 
     public CommandContext(Directive directive, Reference reference, ReferenceRegistry references,
                           CoreConfig config, Rendering rendering, DirectiveLog log, boolean replaying,
-                          CommandTable commands) {
+                          CommandTable commands, Supplier<List<String>> stateDamage) {
         this.directive = directive;
         this.reference = reference;
         this.references = references;
@@ -45,6 +47,12 @@ public final class CommandContext {
         this.log = log;
         this.replaying = replaying;
         this.commands = commands;
+        this.stateDamage = stateDamage;
+    }
+
+    /** What the state directory could not bring back or cannot keep (GET STATE DAMAGE). */
+    public List<String> stateDamage() {
+        return stateDamage.get();
     }
 
     /** Every command the core answers (GET CATALOGUE lists them). */
@@ -151,11 +159,26 @@ public final class CommandContext {
         return named(EntityType.DATA_PROPERTY, index);
     }
 
+    /**
+     * A Manchester class expression argument. A word that is no entity of the reference is read
+     * as a new class (a typo answers nothing): each such class is noted as an unknown name is.
+     */
+    public OWLClassExpression classExpression(int index) {
+        OWLClassExpression expression = Syntax.classExpression(reference, arg(index));
+        expression.classesInSignature().forEach(owlClass -> noteIfUnknown(owlClass, owlClass.getIRI().getShortForm()));
+        return expression;
+    }
+
     /** The entity an argument names; an unknown one is noted, or refused in a query under strict_names. */
     private <E extends OWLEntity> E named(EntityType<E> type, int index) {
         E entity = reference.names().entity(type, arg(index));
+        noteIfUnknown(entity, arg(index));
+        return entity;
+    }
+
+    private void noteIfUnknown(OWLEntity entity, String written) {
         if (!reference.names().knows(entity)) {
-            String unknown = reference.names().describeUnknown(type, arg(index));
+            String unknown = reference.names().describeUnknown(entity.getEntityType(), written);
             if (config.safeguards().strictNames() && directive.command().equalsIgnoreCase("QUERY")) {
                 throw new ArmorException(ExitCode.UNKNOWN_NAME, "reference '" + reference.name()
                         + "' does not know the " + unknown + " (strict_names is on)");
@@ -164,7 +187,6 @@ public final class CommandContext {
                 unknownNames.add(unknown);
             }
         }
-        return entity;
     }
 
     /** A literal from a (type, value) argument pair. */

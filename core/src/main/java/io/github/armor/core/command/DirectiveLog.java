@@ -1,21 +1,13 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.command;
 
-import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.Directive;
-import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.LinkOption;
-import java.nio.file.NoSuchFileException;
-import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
-import java.nio.file.attribute.BasicFileAttributes;
 import java.time.Instant;
 import java.util.Objects;
 import java.util.concurrent.ArrayBlockingQueue;
@@ -86,28 +78,10 @@ public final class DirectiveLog {
     }
 
     /**
-     * Starts writing to {@code target}, a path already confined to the allowed directories with
-     * its symbolic links resolved: it must be a regular file (created if missing).
+     * Starts writing to {@code channel}, a regular file opened for appending
+     * ({@code WritablePaths.openLog}); the file written before is closed once its lines are in.
      */
-    public void file(Path target) {
-        refuseIfNotRegular(target);
-        FileChannel channel;
-        try {
-            // Read-write: opening a FIFO (swapped in after the check) this way never waits for a
-            // reader, as a write-only open would. No link is followed at the last step either.
-            channel = FileChannel.open(target, StandardOpenOption.CREATE, StandardOpenOption.READ,
-                    StandardOpenOption.WRITE, LinkOption.NOFOLLOW_LINKS);
-        } catch (IOException | UnsupportedOperationException e) {
-            throw new ArmorException(ExitCode.LOAD_FAILED, "cannot open log file '" + target + "': " + e, e);
-        }
-        try {
-            refuseIfNotRegular(target);
-            channel.position(channel.size());
-        } catch (IOException | ArmorException e) {
-            close(channel);
-            throw e instanceof ArmorException armor ? armor
-                    : new ArmorException(ExitCode.LOAD_FAILED, "cannot use log file '" + target + "': " + e, e);
-        }
+    public void file(FileChannel channel) {
         startWriter();
         closeAfterQueuedLines(file.getAndSet(channel));
     }
@@ -130,22 +104,6 @@ public final class DirectiveLog {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             close(channel);
-        }
-    }
-
-    private static void refuseIfNotRegular(Path target) {
-        try {
-            BasicFileAttributes attributes = Files.readAttributes(target, BasicFileAttributes.class,
-                    LinkOption.NOFOLLOW_LINKS);
-            if (!attributes.isRegularFile()) {
-                throw new ArmorException(ExitCode.LOAD_FAILED, "'" + target + "' is not a regular file (a "
-                        + (attributes.isDirectory() ? "directory" : attributes.isSymbolicLink() ? "symbolic link"
-                        : "FIFO, socket or device") + "); LOG FILE writes only to regular files");
-            }
-        } catch (NoSuchFileException e) {
-            // created on open
-        } catch (IOException e) {
-            throw new ArmorException(ExitCode.LOAD_FAILED, "cannot use log file '" + target + "': " + e, e);
         }
     }
 
@@ -204,9 +162,31 @@ public final class DirectiveLog {
         }
     }
 
-    private static String shown(String text) {
+    /**
+     * A field as the line shows it: shortened, and with every control character (line breaks,
+     * terminal escapes) and backslash escaped, so that one directive is one line whatever it holds
+     * and no text of a client's can pass for a line of its own.
+     */
+    static String shown(String text) {
         String value = Objects.toString(text, "");
-        return value.length() <= SHOWN_ARGUMENT_CHARS ? value
-                : value.substring(0, SHOWN_ARGUMENT_CHARS) + "... (" + value.length() + " characters)";
+        String kept = value.length() <= SHOWN_ARGUMENT_CHARS ? value : value.substring(0, SHOWN_ARGUMENT_CHARS);
+        StringBuilder line = new StringBuilder(kept.length() + 16);
+        kept.codePoints().forEach(c -> {
+            switch (c) {
+                case '\\' -> line.append("\\\\");
+                case '\n' -> line.append("\\n");
+                case '\r' -> line.append("\\r");
+                case '\t' -> line.append("\\t");
+                default -> {
+                    if (Character.isISOControl(c) || c == 0x2028 || c == 0x2029) {
+                        line.append(String.format("\\u%04x", c));
+                    } else {
+                        line.appendCodePoint(c);
+                    }
+                }
+            }
+        });
+        return kept.length() == value.length() ? line.toString()
+                : line + "... (" + value.length() + " characters)";
     }
 }

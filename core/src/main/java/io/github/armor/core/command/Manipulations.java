@@ -160,7 +160,7 @@ public final class Manipulations implements CommandGroup {
         pair(table, "CLASS EQUIVALENT", new String[] {"class", "class expression"}, false,
                 "define the class by a Manchester class expression", "remove that definition",
                 c -> List.of(c.factory().getOWLEquivalentClassesAxiom(c.owlClass(0),
-                        Syntax.classExpression(c.reference(), c.arg(1)))));
+                        c.classExpression(1))));
         pair(table, "AXIOM", new String[] {"axiom"}, false,
                 "one axiom in Manchester or functional syntax", "remove that axiom",
                 c -> List.of(Syntax.axiom(c.reference(), c.arg(0))));

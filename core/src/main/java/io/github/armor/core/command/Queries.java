@@ -45,7 +45,7 @@ public final class Queries implements CommandGroup {
                 Inferences.instances(c.reference(), c.owlClass(0), false).stream())));
         table.command("QUERY IND DL").args("class expression")
                 .summary("the instances of a Manchester class expression").query(c -> c.ok(c.render().entities(
-                Inferences.instances(c.reference(), Syntax.classExpression(c.reference(), c.arg(0)), false)
+                Inferences.instances(c.reference(), c.classExpression(0), false)
                         .stream())));
         table.command("QUERY CLASS IND").args("ind").optional("most specific only").emptySurplusIgnored()
                 .summary("the classes of the individual, optionally the most specific only").query(c -> {
@@ -85,7 +85,7 @@ public final class Queries implements CommandGroup {
                 Inferences.subClasses(c.reference(), c.owlClass(0), false).stream())));
         table.command("QUERY CLASS DL").args("class expression")
                 .summary("the subclasses of a Manchester class expression").query(c -> c.ok(c.render().entities(
-                Inferences.subClasses(c.reference(), Syntax.classExpression(c.reference(), c.arg(0)), false)
+                Inferences.subClasses(c.reference(), c.classExpression(0), false)
                         .stream())));
         classRelation(table, "QUERY CLASS SUPER", "superclasses", EntitySearcher::getSuperClasses,
                 (r, owlClass) -> r.getSuperClasses(owlClass, false).entities());

@@ -10,6 +10,7 @@ import io.github.armor.core.reference.LoadProgress;
 import io.github.armor.core.reference.OntologyFiles;
 import io.github.armor.core.reference.ReasonerRegistry;
 import io.github.armor.core.reference.Reference;
+import io.github.armor.core.reference.WritablePaths;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
@@ -58,6 +59,8 @@ public final class ReferenceCommands implements CommandGroup {
                 .global(c -> Response.ok(true, LoadProgress.running()));
         table.command("GET CATALOGUE").summary("the catalogue: commands (plugins' too), exit codes, settings; JSON")
                 .global(c -> Response.ok(true, List.of(Catalogue.json(c.commands()).toString())));
+        table.command("GET STATE DAMAGE").summary("what the state directory could not restore or cannot keep now,"
+                + " one JSON object each; empty when nothing").global(c -> Response.ok(true, c.stateDamage()));
         table.command("GET REF CLIENT").optional("reference name").emptySurplusIgnored()
                 .summary("the client that holds the mount, if any").global(c -> {
             String holder = named(c).mountedBy();
@@ -66,6 +69,9 @@ public final class ReferenceCommands implements CommandGroup {
         table.command("GET REF REVISION").optional("reference name")
                 .summary("the revision: how many changes it has acknowledged").global(c -> Response.ok(true,
                         List.of(Long.toString(named(c).revision()))));
+        table.command("GET REF DIGEST").optional("reference name")
+                .summary("a SHA-256 of its asserted axioms, annotations and imports: equal for equal ontologies")
+                .global(c -> Response.ok(true, List.of(digest(named(c), c.config().lockWaitMs()))));
         table.command("GET REF CHANGES").optional("reference name", "since revision", "client name")
                 .summary("its latest acknowledged changes after a revision, one JSON object each")
                 .global(ReferenceCommands::changes);
@@ -79,7 +85,8 @@ public final class ReferenceCommands implements CommandGroup {
         }
         table.command("LOG FILE ON").args("path").emptySurplusIgnored()
                 .summary("log directives to a file").global(c -> {
-            c.log().file(files(c).allowedPath(c.arg(0)));
+            WritablePaths writable = WritablePaths.of(c.config());
+            c.log().file(writable.openLog(writable.check(c.arg(0))));
             return Response.ok(true, List.of());
         });
         table.command("LOG FILE OFF").emptySurplusIgnored().summary("stop logging to a file").global(c -> {
@@ -100,6 +107,32 @@ public final class ReferenceCommands implements CommandGroup {
             }
             return c.ok();
         });
+    }
+
+    /**
+     * What tells two states of an ontology apart without saving it: the sorted text of its
+     * axioms, annotations and imports, hashed (a fuzz run checks rejected directives with it).
+     */
+    private static String digest(Reference reference, long lockWaitMs) {
+        List<String> lines = reference.locked(lockWaitMs, r -> {
+            List<String> all = new java.util.ArrayList<>();
+            r.ontology().axioms().forEach(a -> all.add(a.toString()));
+            r.ontology().annotations().forEach(a -> all.add("annotation " + a));
+            r.ontology().importsDeclarations().forEach(i -> all.add("import " + i.getIRI()));
+            all.add("id " + r.ontology().getOntologyID());
+            return all;
+        });
+        java.util.Collections.sort(lines);
+        try {
+            java.security.MessageDigest sha = java.security.MessageDigest.getInstance("SHA-256");
+            for (String line : lines) {
+                sha.update(line.getBytes(java.nio.charset.StandardCharsets.UTF_8));
+                sha.update((byte) '\n');
+            }
+            return java.util.HexFormat.of().formatHex(sha.digest());
+        } catch (java.security.NoSuchAlgorithmException e) {
+            throw new IllegalStateException("SHA-256 is missing from this Java", e);
+        }
     }
 
     /** The reference a utility names in its first argument, or the directive's. */
@@ -132,10 +165,28 @@ public final class ReferenceCommands implements CommandGroup {
         // Revision 0 is the reference as made: its first change is revision 1.
         long wanted = Math.max(since + 1, 1);
         long keptFrom = history.oldestRevision() < 0 ? reference.revision() + 1 : history.oldestRevision();
-        String description = keptFrom <= wanted ? "" : "changes from revision " + wanted + " to " + (keptFrom - 1)
-                + " are no longer kept; the answer starts at revision " + keptFrom;
-        return Response.ok(true, after.stream().map(change -> change.toJson().toString()).toList())
-                .withDescription(description);
+        List<String> notes = new java.util.ArrayList<>();
+        if (keptFrom > wanted) {
+            notes.add("changes from revision " + wanted + " to " + (keptFrom - 1)
+                    + " are no longer kept; the answer starts at revision " + keptFrom);
+        }
+        // One answer is bounded, whatever range is asked: the client asks again for the rest.
+        List<String> page = new java.util.ArrayList<>();
+        long text = 0;
+        for (AcknowledgedChange change : after) {
+            String json = change.toJson().toString();
+            if (!page.isEmpty() && (page.size() >= ChangeHistory.PAGE_CHANGES
+                    || text + json.length() > ChangeHistory.PAGE_TEXT)) {
+                long last = after.get(page.size() - 1).revision();
+                notes.add(ChangeHistory.MORE_AFTER + last + " (one answer holds at most "
+                        + ChangeHistory.PAGE_CHANGES + " changes or " + ChangeHistory.PAGE_TEXT
+                        + " characters): ask again from revision " + last + " for the rest");
+                break;
+            }
+            page.add(json);
+            text += json.length();
+        }
+        return Response.ok(true, page).withDescription(String.join("; ", notes));
     }
 
     private static OntologyFiles files(CommandContext c) {
@@ -157,7 +208,8 @@ public final class ReferenceCommands implements CommandGroup {
         Reference.Settings settings = new Reference.Settings(source, iriArgument, reasoner, bufferedManipulation,
                 bufferedReasoner);
         StringBuilder warnings = new StringBuilder();
-        Reference reference = c.references().createOrReuse(name, source, () -> {
+        Reference reference = c.references().createOrReuse(name, source, client,
+                c.config().safeguards().referencesPerClient(), () -> {
             try (LoadProgress progress = LoadProgress.start(name, source)) {
                 OntologyFiles.Loaded loaded = reader.apply(source);
                 warnings.append(loaded.warnings());
@@ -191,7 +243,7 @@ public final class ReferenceCommands implements CommandGroup {
                     + "' was not loaded from a file: SAVE needs a path");
         }
         OntologyFiles files = files(c);
-        Path target = files.allowedPath(pathArgument);
+        Path target = files.writablePath(pathArgument);
         String format = c.hasArg(1) ? c.arg(1) : "";
         if (withInferences) {
             files.save(Inferences.withInferences(reference), target, format.isEmpty() ? "rdfxml" : format);

@@ -59,6 +59,13 @@ public final class Syntax {
     // failing; an operator with nothing after it is refused here, before parsing.
     private static final Pattern DANGLING_OPERATOR = Pattern.compile(
             "(?i)\\b(not|some|only|value|and|or|that|inverse|(?:min|max|exactly)(?:\\s+\\d+)?)\\s*(?=$|[)\\],])");
+    // Quoted literals first (skipped whole), IRIs, then names with an optional prefix.
+    private static final Pattern EXPRESSION_WORD = Pattern.compile(
+            "\"(?:[^\"\\\\]|\\\\.)*+\"|<[^>\\s]*+>|[\\p{L}_][\\p{L}\\p{N}_.\\-]*+(?::[\\p{L}\\p{N}_.\\-]++)?");
+    private static final Pattern RESTRICTION_NEXT = Pattern.compile("\\s*+(?:some|only|value|min|max|exactly|Self)\\b");
+    private static final Pattern VALUE_BEFORE = Pattern.compile("\\bvalue$");
+    private static final Set<String> LITERAL_WORDS = Set.of("true", "false");
+    private static final int UNKNOWN_WORDS_SHOWN = 5;
     private static final Pattern FUNCTIONAL_POSITION = Pattern.compile("line (\\d+), column (\\d+)");
     private static final Pattern FUNCTIONAL_AXIOM = Pattern.compile("^\\s*[A-Z][A-Za-z]*\\s*\\(.*", Pattern.DOTALL);
 
@@ -66,7 +73,43 @@ public final class Syntax {
 
     static OWLClassExpression classExpression(Reference reference, String text) {
         ManchesterOWLSyntaxParser parser = parser(reference, text);
-        return parse(text, parser::parseClassExpression);
+        try {
+            return parser.parseClassExpression();
+        } catch (OWLParserException e) {
+            // A misspelt property reads as a new class, so the parser stumbles on the word after it
+            // ("Encountered some"): the unknown words are what the client needs to hear first.
+            String unknown = unknownWords(reference, text);
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + abbreviated(text) + "': "
+                    + (unknown.isEmpty() ? "" : "the reference does not know " + unknown + "; ") + shortened(e), e);
+        }
+    }
+
+    /** The words of a class expression that name no entity of the reference, each with the known names closest to it. */
+    private static String unknownWords(Reference reference, String text) {
+        ReferenceEntityChecker checker = new ReferenceEntityChecker(reference, Set.of());
+        List<String> described = new java.util.ArrayList<>();
+        java.util.regex.Matcher word = EXPRESSION_WORD.matcher(text);
+        while (word.find() && described.size() < UNKNOWN_WORDS_SHOWN) {
+            String name = word.group();
+            if (name.startsWith("\"") || ManchesterOWLSyntax.parse(name) != null || LITERAL_WORDS.contains(name)
+                    || checker.knows(name)) {
+                continue;
+            }
+            String before = text.substring(0, word.start()).stripTrailing();
+            EntityType<?> type = RESTRICTION_NEXT.matcher(text).region(word.end(), text.length()).lookingAt()
+                    ? EntityType.OBJECT_PROPERTY
+                    : before.endsWith("{") || before.endsWith(",") || VALUE_BEFORE.matcher(before).find()
+                    ? EntityType.NAMED_INDIVIDUAL : EntityType.CLASS;
+            String description = reference.names().describeUnknown(type, name);
+            if (type == EntityType.OBJECT_PROPERTY && !description.contains("did you mean")) {
+                String asData = reference.names().describeUnknown(EntityType.DATA_PROPERTY, name);
+                description = asData.contains("did you mean") ? asData : description;
+            }
+            if (!described.contains(description)) {
+                described.add(description);
+            }
+        }
+        return String.join(", ", described);
     }
 
     /** One axiom in Manchester syntax ({@code Robot SubClassOf isIn exactly 1 Location}) or functional syntax. */
@@ -284,6 +327,11 @@ public final class Syntax {
             }
             E entity = factory.getOWLEntity(type, iri);
             return ontology.containsEntityInSignature(entity, Imports.INCLUDED) || entity.isBuiltIn() ? entity : null;
+        }
+
+        /** Whether a word names an entity of the reference or a datatype (a new class does not count). */
+        boolean knows(String name) {
+            return existing(EntityType.CLASS, name) != null || isAnyEntity(name) || getOWLDatatype(name) != null;
         }
 
         private boolean isAnyEntity(String name) {

@@ -26,12 +26,17 @@ final class HierarchySidecar {
 
     private HierarchySidecar() {}
 
+    /** How the store writes a file durably (temporary file, forced, renamed over). */
+    @FunctionalInterface
+    interface DurableWrite {
+        void write(Path target, byte[] bytes) throws IOException;
+    }
+
     /** Writes a reference's hierarchy (read under its lock with {@link #of}; written from any thread). */
-    static void write(Path dir, ClassifiedSchema schema) {
+    static void write(Path dir, ClassifiedSchema schema, DurableWrite durably) {
         try {
-            ReferenceStore.writeDurably(dir.resolve(FILE),
-                    out -> out.write(schema.toJson().toString().getBytes(StandardCharsets.UTF_8)));
-        } catch (IOException e) {
+            durably.write(dir.resolve(FILE), schema.toJson().toString().getBytes(StandardCharsets.UTF_8));
+        } catch (IOException | RuntimeException e) {
             LOG.warn("could not keep the class hierarchy beside the checkpoint in {}: {}", dir, e.toString());
         }
     }
@@ -42,14 +47,15 @@ final class HierarchySidecar {
     }
 
     /** Reads the sidecar of a recovered reference, if there is one, and offers it to the reference opened next. */
-    static void read(Path dir) {
+    static void read(Storage storage, Path dir) {
         Path file = dir.resolve(FILE);
         if (!Files.isRegularFile(file)) {
             return;
         }
         try {
-            ClassifiedSchema.remember(ClassifiedSchema.fromJson(JsonParser.parseString(Files.readString(file))
-                    .getAsJsonObject(), OWLManager.getOWLDataFactory()));
+            String text = new String(storage.read(file), StandardCharsets.UTF_8);
+            ClassifiedSchema.remember(ClassifiedSchema.fromJson(JsonParser.parseString(text).getAsJsonObject(),
+                    OWLManager.getOWLDataFactory()));
         } catch (IOException | RuntimeException e) {
             LOG.warn("the class hierarchy beside {} is unreadable ({}); it will be classified again", dir,
                     e.toString());

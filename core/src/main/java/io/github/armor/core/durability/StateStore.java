@@ -17,6 +17,7 @@ import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -38,29 +39,45 @@ public final class StateStore {
     private final Path refsDir;
     private FileLock stateLock;
     private final Durability durability;
+    private final Storage storage;
+    private final StateDamage damage;
     private final ConcurrentHashMap<String, ReferenceStore> stores = new ConcurrentHashMap<>();
-    private final ExecutorService checkpointWriter = Executors.newSingleThreadExecutor(r -> {
-        Thread thread = new Thread(r, "armor-checkpoint-writer");
-        thread.setDaemon(true);
-        return thread;
-    });
+    private final ExecutorService checkpointWriter;
 
     public StateStore(Durability durability) {
+        this(durability, Storage.FILES, Executors.newSingleThreadExecutor(r -> {
+            Thread thread = new Thread(r, "armor-checkpoint-writer");
+            thread.setDaemon(true);
+            return thread;
+        }));
+    }
+
+    /**
+     * A state store whose files go through {@code storage} and whose checkpoints are written by
+     * {@code checkpointWriter} (tests pass a storage that fails or loses power on cue, and a
+     * writer that runs in the caller's thread).
+     */
+    public StateStore(Durability durability, Storage storage, ExecutorService checkpointWriter) {
         this.durability = durability;
+        this.storage = storage;
+        this.checkpointWriter = checkpointWriter;
         this.refsDir = durability.stateDir().resolve("refs");
+        this.damage = new StateDamage(storage, durability.stateDir());
     }
 
     /**
      * A reference as it was: its checkpoint loaded, the records to replay, its mount holder, its
-     * revision, and its latest acknowledged changes (for GET REF CHANGES).
+     * revision, its latest acknowledged changes (for GET REF CHANGES), and what of it could not be
+     * brought back.
      */
     public record Restorable(String name, OWLOntology ontology, Reference.Settings settings, String mountedBy,
                              List<AcknowledgedChange> records, long revision, ReferenceStore store,
-                             List<AcknowledgedChange> history) {}
+                             List<AcknowledgedChange> history, List<String> problems, Path setAside) {}
 
     /**
      * Reads every reference found on disk (or, when restoring is off, deletes them for a clean
-     * start). A reference whose files cannot be read is moved aside and reported, not fatal.
+     * start), each up to its last intact point. A reference that cannot be restored at all is
+     * moved into {@code damaged/} and reported, never fatal.
      */
     public List<Restorable> recoverAll(OntologyFiles files) {
         List<Restorable> found = new ArrayList<>();
@@ -69,23 +86,31 @@ public final class StateStore {
             if (!durability.restore()) {
                 deleteTree(refsDir);
             }
+            deleteTree(durability.stateDir().resolve("dropped"));
             Files.createDirectories(refsDir);
+            damage.readEarlier();
             try (Stream<Path> dirs = Files.list(refsDir)) {
                 for (Path dir : dirs.sorted().toList()) {
+                    Path setAside = damage.newEntry(dir.getFileName().toString());
                     try {
-                        ReferenceStore.Recovered r = ReferenceStore.recover(dir, durability);
-                        Path importsDir = r.settings().source() == null || r.settings().source().startsWith("http")
-                                ? null : Path.of(r.settings().source()).toAbsolutePath().getParent();
-                        OWLOntology ontology = files.loadTrusted(r.checkpoint(), importsDir);
-                        restoreFormat(ontology, r.formatClass());
-                        found.add(new Restorable(r.name(), ontology, r.settings(), r.mountedBy(), r.records(),
-                                r.revision(), r.store(), r.history()));
+                        ReferenceStore.Recovered r = ReferenceStore.recover(storage, dir, durability,
+                                (checkpoint, settings, formatClass) -> restoreFormat(files.loadTrusted(checkpoint,
+                                        importsDir(settings)), formatClass), setAside);
+                        found.add(new Restorable(r.name(), r.ontology(), r.settings(), r.mountedBy(), r.records(),
+                                r.revision(), r.store(), r.history(), r.problems(), setAside));
+                    } catch (ReferenceStore.Unfinished e) {
+                        LOG.info("{}: {}; deleted", dir, e.getMessage());
+                        deleteTree(dir);
                     } catch (IOException | RuntimeException e) {
-                        Path aside = durability.stateDir().resolve("unreadable").resolve(dir.getFileName()
-                                + "-" + System.currentTimeMillis());
-                        LOG.error("cannot restore {}: {}; moved to {}", dir, e, aside);
-                        Files.createDirectories(aside.getParent());
-                        Files.move(dir, aside);
+                        List<String> problems = e instanceof ReferenceStore.Unrestorable u ? u.problems
+                                : List.of(e.toString());
+                        try {
+                            storage.createDirectories(setAside.getParent());
+                            storage.rename(dir, setAside);
+                        } catch (IOException move) {
+                            LOG.error("cannot move {} aside: {}", dir, move.toString());
+                        }
+                        damage.restored(unescape(dir.getFileName().toString()), false, -1, problems, setAside);
                     }
                 }
             }
@@ -93,6 +118,11 @@ public final class StateStore {
             throw new IllegalStateException("state directory " + refsDir + " is unusable: " + e, e);
         }
         return found;
+    }
+
+    private static Path importsDir(Reference.Settings settings) {
+        return settings.source() == null || settings.source().startsWith("http")
+                ? null : Path.of(settings.source()).toAbsolutePath().getParent();
     }
 
     /**
@@ -147,17 +177,40 @@ public final class StateStore {
         }
     }
 
-    /** Takes over the files of a restored reference for its further changes. */
-    public void adopt(Restorable restored) {
+    /**
+     * Takes over the files of a restored reference for its further changes, and reports what its
+     * restore could not bring back: damage found in its files, and journal records that failed
+     * when replayed ({@code replayFailures}).
+     */
+    public void adopt(Restorable restored, long revision, List<String> replayFailures) {
         stores.put(restored.name(), restored.store());
+        List<String> problems = new ArrayList<>(restored.problems());
+        problems.addAll(replayFailures);
+        if (!problems.isEmpty()) {
+            damage.restored(restored.name(), true, revision, problems, restored.setAside());
+        }
+    }
+
+    /** A reference whose files were read but which could not be made again: reported, its files left. */
+    public void notRestored(Restorable restorable, String why) {
+        restorable.store().close();
+        damage.restored(restorable.name(), false, -1, List.of(why + "; its files were left in "
+                + restorable.store().dir() + " for the next start"), restorable.setAside());
     }
 
     public void created(Reference reference) {
+        Path dir = dirFor(reference.name());
         try {
-            stores.put(reference.name(), ReferenceStore.create(dirFor(reference.name()), reference, durability));
-        } catch (IOException e) {
-            throw new ArmorException(ExitCode.LOAD_FAILED, "cannot keep reference '" + reference.name()
-                    + "' in the state directory: " + e.getMessage(), e);
+            stores.put(reference.name(), ReferenceStore.create(storage, dir, reference, durability));
+        } catch (IOException | RuntimeException failure) {
+            // An ontology the OWL API cannot copy or write (an ontology IRI it refuses) cannot be kept either.
+            IOException e = failure instanceof IOException io ? io : new IOException(failure.toString(), failure);
+            try {
+                deleteTree(dir);
+            } catch (IOException cleanup) {
+                LOG.warn("could not delete the unfinished state of '{}': {}", reference.name(), cleanup.toString());
+            }
+            throw notDurable("cannot keep reference '" + reference.name() + "' in the state directory", e);
         }
     }
 
@@ -172,10 +225,42 @@ public final class StateStore {
         }
         try {
             store.record(change);
+            damage.accepting(reference.name());
         } catch (IOException e) {
-            throw new ArmorException(ExitCode.LOAD_FAILED, "cannot write the journal of '" + reference.name()
-                    + "', change undone: " + e.getMessage(), e);
+            damage.refusing(reference.name(), e.getMessage() == null ? e.toString() : e.getMessage());
+            throw notDurable("cannot write the journal of '" + reference.name() + "'", e);
         }
+    }
+
+    /**
+     * Records one change on each of several references (an atomic list): all or none. When one
+     * cannot be written, those already written are taken back out of their journals.
+     */
+    public void recordAll(Map<Reference, AcknowledgedChange> changes) {
+        List<Reference> written = new ArrayList<>();
+        try {
+            for (Map.Entry<Reference, AcknowledgedChange> change : changes.entrySet()) {
+                record(change.getKey(), change.getValue());
+                written.add(change.getKey());
+            }
+        } catch (ArmorException e) {
+            for (Reference reference : written) {
+                try {
+                    stores.get(reference.name()).retractLast();
+                } catch (IOException retract) {
+                    // Cut before the next append (which fails until it can be), or at restore: a
+                    // later record of the same revision marks it refused.
+                    LOG.error("could not take the refused list's record back out of the journal of '{}' yet: {}",
+                            reference.name(), retract.toString());
+                }
+            }
+            throw e;
+        }
+    }
+
+    private static ArmorException notDurable(String what, IOException e) {
+        return new ArmorException(ExitCode.NOT_DURABLE, "not durable: " + what + " ("
+                + (e.getMessage() == null ? e.toString() : e.getMessage()) + "); nothing changed", e);
     }
 
     /** Checkpoints the reference if due; the caller holds its lock. */
@@ -186,16 +271,52 @@ public final class StateStore {
         }
     }
 
+    /**
+     * Forgets a reference's state before it is unloaded: its folder is moved out of {@code refs/}
+     * (one rename, forced to disk), then deleted. When the move fails the reference must stay:
+     * a restart would bring it back.
+     */
     public void dropped(Reference reference) {
-        ReferenceStore store = stores.remove(reference.name());
+        ReferenceStore store = stores.get(reference.name());
         if (store == null) {
             return;
         }
+        Path gone = durability.stateDir().resolve("dropped").resolve(store.dir().getFileName() + "-" + System.nanoTime());
         try {
-            store.delete();
+            storage.createDirectories(gone.getParent());
+            storage.rename(store.dir(), gone);
         } catch (IOException e) {
-            LOG.error("could not delete the state of dropped reference '{}'", reference.name(), e);
+            throw notDurable("cannot remove the state of '" + reference.name() + "'", e);
         }
+        try {
+            storage.syncDirectory(refsDir);
+        } catch (IOException e) {
+            // Not known to be on the disk: put the folder back and refuse. If even that fails, the
+            // folder is out of refs/ and the DROP goes on (only a power cut now could undo it).
+            try {
+                storage.rename(gone, store.dir());
+                throw notDurable("cannot remove the state of '" + reference.name() + "'", e);
+            } catch (IOException back) {
+                LOG.error("the DROP of '{}' could not be forced to disk nor undone: {}", reference.name(),
+                        back.toString());
+            }
+        }
+        stores.remove(reference.name());
+        store.close();
+        try {
+            deleteTree(gone);
+        } catch (IOException e) {
+            LOG.warn("could not delete the state of dropped reference '{}' ({}); the next start does", reference.name(),
+                    e.toString());
+        }
+    }
+
+    /**
+     * What the state directory could not bring back or cannot keep, one JSON object per problem
+     * (GET STATE DAMAGE): restores that found damage, references whose changes are refused now.
+     */
+    public List<String> damage() {
+        return damage.lines();
     }
 
     /** Lets checkpoints in progress finish, closes the journals and releases the directory. */
@@ -233,9 +354,23 @@ public final class StateStore {
         return refsDir.resolve(escaped.toString());
     }
 
-    private static void restoreFormat(OWLOntology ontology, String formatClass) {
+    private static String unescape(String escaped) {
+        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        for (int i = 0; i < escaped.length(); i++) {
+            char c = escaped.charAt(i);
+            if (c == '%' && i + 2 < escaped.length()) {
+                bytes.write(Integer.parseInt(escaped.substring(i + 1, i + 3), 16));
+                i += 2;
+            } else {
+                bytes.write(c);
+            }
+        }
+        return bytes.toString(StandardCharsets.UTF_8);
+    }
+
+    private static OWLOntology restoreFormat(OWLOntology ontology, String formatClass) {
         if (formatClass.isEmpty()) {
-            return;
+            return ontology;
         }
         try {
             OWLDocumentFormat format = (OWLDocumentFormat) Class.forName(formatClass).getDeclaredConstructor()
@@ -248,6 +383,7 @@ public final class StateStore {
         } catch (ReflectiveOperationException | ClassCastException e) {
             LOG.warn("document format {} not restored, SAVE will default to the checkpoint's", formatClass);
         }
+        return ontology;
     }
 
     private static void deleteTree(Path root) throws IOException {

@@ -367,9 +367,11 @@ public final class Subscriptions implements AutoCloseable {
         }
         if (registered(response)) {
             s.timeouts = 0;
+            // After a failure its subscriber heard of, the first answer again is news even when it is unchanged.
+            boolean recovered = s.announcedFailure != 0;
             s.announcedFailure = 0;
             List<String> now = answerOf(response);
-            announce(s, evaluation.revision(), s.answer, now, 0, "", false);
+            announce(s, evaluation.revision(), s.answer, now, 0, "", recovered);
             s.answer = now;
             s.revision = evaluation.revision();
             return true;

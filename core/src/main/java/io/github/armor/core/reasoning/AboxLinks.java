@@ -141,7 +141,10 @@ final class AboxLinks {
         if (axiom instanceof OWLObjectPropertyAssertionAxiom assertion) {
             return links(assertion.getProperty());
         }
-        return axiom instanceof OWLSameIndividualAxiom || axiom instanceof OWLNegativeObjectPropertyAssertionAxiom;
+        // A class assertion naming individuals ({a}, P value a) joins the hub, where those individuals are.
+        return axiom instanceof OWLSameIndividualAxiom || axiom instanceof OWLNegativeObjectPropertyAssertionAxiom
+                || axiom instanceof OWLClassAssertionAxiom assertion && assertion.getClassExpression().isAnonymous()
+                && assertion.getClassExpression().individualsInSignature().findAny().isPresent();
     }
 
     /** Whether an ABox axiom can change what links (a class assertion on a class expression, a negative assertion). */

@@ -332,6 +332,11 @@ public final class ModularReasoner implements OWLReasoner {
         if (links.nominals().isEmpty()) {
             return true;
         }
+        if (underlyingName.equalsIgnoreCase("JFACT")) {
+            // Seen in the equivalence test: JFact left the schema's individuals out of a module's answers.
+            reasonOnWhole("individuals named in the schema (JFact answers them differently in modules)");
+            return false;
+        }
         // A scratch manager: the extractor makes an ontology in it, which the reference's would keep (and refuse twice).
         NominalIndependence found = NominalIndependence.check(
                 org.semanticweb.owlapi.apibinding.OWLManager.createOWLOntologyManager(),

@@ -225,6 +225,8 @@ final class ModuleRealiser {
 
     private static NodeSet<OWLClass> withSuperClasses(OWLReasoner reasoner, NodeSet<OWLClass> direct) {
         OWLClassNodeSet all = new OWLClassNodeSet();
+        // Every individual is a Thing; JFact leaves it out for some (individuals named in the schema).
+        all.addNode(reasoner.getTopClassNode());
         direct.forEach(node -> {
             all.addNode(node);
             // JFact answers an empty node for an individual whose only type is owl:Thing.

@@ -20,6 +20,11 @@ public final class ChangeHistory {
     // find its change: the load benchmark (bench/default_clients.py) saw 2,000-3,000 meanwhile.
     public static final int MAX_CHANGES = 10_000;
     public static final long MAX_TEXT = 8L << 20;
+    /** What one GET REF CHANGES answers at most: a client pages through the rest. */
+    public static final int PAGE_CHANGES = 1_000;
+    public static final long PAGE_TEXT = 1L << 20;
+    /** How an answer that leaves changes out says from where to go on (clients read the number after it). */
+    public static final String MORE_AFTER = "more changes after revision ";
 
     private final ArrayDeque<AcknowledgedChange> changes = new ArrayDeque<>();
     // Each client's last change, kept however old: a client must read its own writes.

@@ -181,21 +181,23 @@ final class ImportResolver implements OWLOntologyIRIMapper, MissingImportListene
 
     /** The final target of a local document, inside allowed_dirs and readable without blocking. */
     private Path confined(Path path, String what) throws Refusal {
-        Optional<Path> inside;
+        Path target;
+        String refusal;
         try {
-            inside = allowed.inside(path);
+            target = AllowedPaths.finalTarget(path.toAbsolutePath());
+            refusal = allowed.refusal(target);
         } catch (IOException | RuntimeException e) {
             throw new Refusal(true, what + ", which cannot be used: " + e);
         }
-        if (inside.isEmpty()) {
-            throw new Refusal(true, what + ", which " + allowed.outsideText());
+        if (refusal != null) {
+            throw new Refusal(true, what + ", which " + refusal);
         }
         // A FIFO would block the load (and every LOAD after it) until someone writes to it.
-        if (!Files.isRegularFile(inside.get())) {
-            throw new Refusal(false, what + ", which " + (Files.exists(inside.get()) ? "is not a regular file"
+        if (!Files.isRegularFile(target)) {
+            throw new Refusal(false, what + ", which " + (Files.exists(target) ? "is not a regular file"
                     : "does not exist"));
         }
-        return inside.get();
+        return target;
     }
 
     private Optional<ImportCatalog> catalog(Path folder) {

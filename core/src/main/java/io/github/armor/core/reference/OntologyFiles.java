@@ -5,10 +5,8 @@ import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.ExitCode;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -35,9 +33,10 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Reading and writing ontology documents, with the security rules: client paths stay inside the
- * configured directories, owl:imports resolve only to documents inside them too (or the web,
- * when web loading is on), and no parser fetches an external entity.
+ * Reading and writing ontology documents, with the security rules: what a client names is read
+ * only inside allowed_dirs ({@link AllowedPaths}) and written only inside write_dirs
+ * ({@link WritablePaths}), owl:imports resolve only to documents inside allowed_dirs too (or the
+ * web, when web loading is on), and no parser fetches an external entity.
  */
 public final class OntologyFiles {
     private static final Logger LOG = LoggerFactory.getLogger(OntologyFiles.class);
@@ -59,10 +58,12 @@ public final class OntologyFiles {
 
     private final CoreConfig config;
     private final AllowedPaths allowed;
+    private final WritablePaths writable;
 
     public OntologyFiles(CoreConfig config) {
         this.config = config;
-        this.allowed = new AllowedPaths(config.allowedDirs());
+        this.allowed = AllowedPaths.forReading(config);
+        this.writable = WritablePaths.of(config);
     }
 
     /**
@@ -90,16 +91,21 @@ public final class OntologyFiles {
         return newManager(new ImportResolver(new AllowedPaths(List.of()), false, null));
     }
 
-    /** A client path, made absolute and checked against the allowed directories (symbolic links followed). */
+    /** A client path to read, made absolute and checked against allowed_dirs (symbolic links followed). */
     public Path allowedPath(String clientPath) {
         return allowed.check(clientPath);
+    }
+
+    /** A client path to write, made absolute and checked against write_dirs (symbolic links followed). */
+    public Path writablePath(String clientPath) {
+        return writable.check(clientPath);
     }
 
     public Loaded loadFile(String clientPath) {
         Path path = allowedPath(clientPath);
         if (!Files.isRegularFile(path)) {
             throw new ArmorException(ExitCode.LOAD_FAILED, Files.exists(path)
-                    ? "'" + clientPath + "' is not a regular file" : "no such file: '" + clientPath + "'");
+                    ? "'" + path + "' is not a regular file" : "no such file: " + path);
         }
         ImportResolver imports = new ImportResolver(allowed, config.webLoading(), path.getParent());
         OWLOntology ontology = load(newManager(imports), LoadProgress.counted(path.toFile()), clientPath,
@@ -152,21 +158,19 @@ public final class OntologyFiles {
         }
     }
 
-    /** Writes atomically (temporary file, then rename) so a crash never leaves half a document. */
+    /**
+     * Writes to a target {@link #writablePath} checked, atomically (temporary file, then rename)
+     * so a crash never leaves half a document.
+     */
     public void save(OWLOntology ontology, Path target, String formatName) {
         OWLDocumentFormat format = format(ontology, formatName);
-        try {
-            Files.createDirectories(target.toAbsolutePath().getParent());
-            Path temporary = Files.createTempFile(target.toAbsolutePath().getParent(), ".armor-save", ".tmp");
-            // A temporary file is private (0600); the saved ontology is an ordinary document.
-            Files.setPosixFilePermissions(temporary, java.nio.file.attribute.PosixFilePermissions.fromString("rw-r--r--"));
-            try (OutputStream out = Files.newOutputStream(temporary)) {
+        writable.write(target, out -> {
+            try {
                 ontology.getOWLOntologyManager().saveOntology(ontology, format, out);
+            } catch (OWLOntologyStorageException e) {
+                throw new IOException(e.getMessage(), e);
             }
-            Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } catch (IOException | OWLOntologyStorageException e) {
-            throw new ArmorException(ExitCode.LOAD_FAILED, "could not save to '" + target + "': " + e.getMessage(), e);
-        }
+        });
     }
 
     private OWLDocumentFormat format(OWLOntology ontology, String formatName) {

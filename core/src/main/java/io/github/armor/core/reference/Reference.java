@@ -77,6 +77,8 @@ public final class Reference {
     // When the reasoner was last brought up to date and how long it took (the web view shows them).
     private volatile long lastReasoningEpochMs;
     private volatile long lastReasoningNanos;
+    // Changes the reasoner has not been brought up to date with since the last timed reasoning.
+    private boolean unreasonedChanges;
     // Read by event and subscription threads without the lock; written only under it.
     private volatile long revision;
     private final ChangeHistory changeHistory = new ChangeHistory();
@@ -443,6 +445,7 @@ public final class Reference {
         }
         manager.applyChanges(reversed);
         modificationCount++;
+        unreasonedChanges |= !reversed.isEmpty();
         removedSinceSync |= reversed.stream().anyMatch(OWLOntologyChange::isRemoveAxiom);
         if (undo.pendingBefore != null) {
             pending.clear();
@@ -461,6 +464,7 @@ public final class Reference {
         }
         List<OWLOntologyChange> enacted = new ArrayList<>(manager.applyChangesAndGetDetails(changes).getEnactedChanges());
         modificationCount++;
+        unreasonedChanges |= !enacted.isEmpty();
         removedSinceSync |= enacted.stream().anyMatch(OWLOntologyChange::isRemoveAxiom);
         if (transaction != null) {
             transaction.enacted.addAll(enacted);
@@ -475,10 +479,17 @@ public final class Reference {
      * a restore this makes even a buffered reasoner see everything that was replayed.
      */
     public void synchroniseReasoner() {
-        timedReasoning(() -> {
+        Runnable work = () -> {
             bringReasonerUpToDate();
             refreshConsistency();
-        });
+        };
+        if (unreasonedChanges) {
+            timedReasoning(work);
+        } else {
+            // Nothing new (a restore without changes to replay): the time shown stays that of
+            // the reasoning that did the work, not of a no-op flush ("reasoned in 0.0 ms").
+            work.run();
+        }
     }
 
     /** When the reasoner was last brought up to date (ms since the epoch; 0: never). */
@@ -492,6 +503,7 @@ public final class Reference {
     }
 
     private void timedReasoning(Runnable work) {
+        unreasonedChanges = false;
         long start = System.nanoTime();
         try {
             work.run();

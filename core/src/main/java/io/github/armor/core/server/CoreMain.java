@@ -9,6 +9,7 @@ import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Setting;
 import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.reference.ReasonerRegistry;
+import io.github.armor.core.reference.WritablePaths;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -59,6 +60,12 @@ public final class CoreMain {
             return;
         }
         CoreConfig config = CoreConfig.fromSettings(settings);
+        List<String> unwritable = WritablePaths.of(config).prepare();
+        if (!unwritable.isEmpty()) {
+            System.out.println(CANNOT_START + String.join("; ", unwritable));
+            System.out.flush();
+            System.exit(USAGE);
+        }
         NetworkGuard.install(config);
         Thread watchParent = new Thread(() -> {
             try {

@@ -4,6 +4,9 @@ package io.github.armor.core.server;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import io.github.armor.core.ArmorCore;
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.Response;
+import io.github.armor.core.api.SizeLimits;
 import io.github.armor.core.command.Catalogue;
 import io.github.armor.core.events.AnswerEvent;
 import io.github.armor.core.events.ChangeEvent;
@@ -58,7 +61,6 @@ import org.slf4j.LoggerFactory;
  */
 public final class CoreServer {
     private static final Logger LOG = LoggerFactory.getLogger(CoreServer.class);
-    private static final int MAX_FRAME_BYTES = 256 << 20;
     // Reasoners recurse deeply on real ontologies; a large stack turns many overflows into answers.
     private static final long WORKER_STACK_BYTES = 256L << 20;
 
@@ -91,7 +93,12 @@ public final class CoreServer {
     private void serveConnection(SocketChannel connection) {
         Object writeLock = new Object();
         Consumer<CoreEvent> pushEvent = event -> {
-            String frame = event.toJson().toString();
+            byte[] frame = event.toJson().toString().getBytes(StandardCharsets.UTF_8);
+            if (frame.length > SizeLimits.FRAME_BYTES) {
+                LOG.warn("an event of {} bytes is larger than a frame ({}); not sent", frame.length,
+                        SizeLimits.FRAME_BYTES);
+                return;
+            }
             try {
                 synchronized (writeLock) {
                     writeFrame(connection, frame);
@@ -106,10 +113,10 @@ public final class CoreServer {
             while (true) {
                 JsonObject request = JsonParser.parseString(readFrame(connection)).getAsJsonObject();
                 workers.execute(() -> {
-                    JsonObject reply = answer(request, subscribed);
+                    byte[] reply = fitted(request, answer(request, subscribed));
                     try {
                         synchronized (writeLock) {
-                            writeFrame(connection, reply.toString());
+                            writeFrame(connection, reply);
                         }
                     } catch (IOException e) {
                         LOG.warn("could not send a reply: {}", e.toString());
@@ -156,6 +163,34 @@ public final class CoreServer {
         return reply;
     }
 
+    /**
+     * The reply as a frame's bytes; a reply larger than a frame (the node would drop the
+     * connection, and with it the core) becomes its request's 221 instead. Lists never get here
+     * ({@link SizeLimits#addAnswer}); one answer of a huge reference's query can.
+     */
+    private static byte[] fitted(JsonObject request, JsonObject reply) {
+        byte[] bytes = reply.toString().getBytes(StandardCharsets.UTF_8);
+        if (bytes.length <= SizeLimits.FRAME_BYTES) {
+            return bytes;
+        }
+        ArmorException tooLarge = SizeLimits.tooLarge("the answer is " + SizeLimits.size(bytes.length)
+                + " as a frame from the core to the node; the limit is " + SizeLimits.size(SizeLimits.FRAME_BYTES)
+                + " (narrow the question)");
+        JsonObject refused = new JsonObject();
+        refused.add("id", request.get("id"));
+        Response failure = Response.failure(tooLarge, false);
+        if (reply.has("response")) {
+            refused.add("response", WireCodec.response(failure));
+        } else if (reply.has("list")) {
+            int count = request.getAsJsonArray("directives").size();
+            refused.add("list", WireCodec.listResponse(new ArmorCore.ListResponse(false, false,
+                    java.util.Collections.nCopies(count, failure))));
+        } else {
+            refused.addProperty("error", tooLarge.getMessage());
+        }
+        return refused.toString().getBytes(StandardCharsets.UTF_8);
+    }
+
     private void subscribe(JsonObject request, JsonObject reply, Set<String> subscribed) {
         String id = request.get("subscription").getAsString();
         List<String> known = null;
@@ -178,7 +213,7 @@ public final class CoreServer {
     private static String readFrame(SocketChannel channel) throws IOException {
         ByteBuffer header = readFully(channel, 4);
         int length = header.getInt();
-        if (length < 0 || length > MAX_FRAME_BYTES) {
+        if (length < 0 || length > SizeLimits.FRAME_BYTES) {
             throw new IOException("frame length " + length + " out of range");
         }
         return StandardCharsets.UTF_8.decode(readFully(channel, length)).toString();
@@ -194,8 +229,7 @@ public final class CoreServer {
         return buffer.flip();
     }
 
-    private static void writeFrame(SocketChannel channel, String json) throws IOException {
-        byte[] payload = json.getBytes(StandardCharsets.UTF_8);
+    private static void writeFrame(SocketChannel channel, byte[] payload) throws IOException {
         ByteBuffer frame = ByteBuffer.allocate(4 + payload.length).putInt(payload.length).put(payload).flip();
         while (frame.hasRemaining()) {
             channel.write(frame);

@@ -23,6 +23,7 @@ import java.util.function.BooleanSupplier;
 import java.util.stream.Collectors;
 import org.semanticweb.owlapi.model.AxiomType;
 import org.semanticweb.owlapi.model.EntityType;
+import org.semanticweb.owlapi.model.IRI;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLObjectProperty;
@@ -119,7 +120,9 @@ final class PropertyGraph {
                     .sorted(ViewJson.BY_NAME).forEach(properties::add);
         }
         for (String name : propertyNames == null ? List.<String>of() : propertyNames) {
-            properties.add(known(reference, EntityType.OBJECT_PROPERTY, name));
+            // The page sends the IRIs it listed: one the naming rules refuse (it holds a '|', say)
+            // is still the reference's own property, and must not take the graph with it.
+            properties.add(byIri(reference, name).orElseGet(() -> known(reference, EntityType.OBJECT_PROPERTY, name)));
         }
         List<OWLNamedIndividual> candidates;
         if (className.isBlank()) {
@@ -145,6 +148,21 @@ final class PropertyGraph {
             }
         }
         return new Scope(properties, candidates, focus);
+    }
+
+    /**
+     * An object property of the reference named by its exact IRI in angle brackets, as the page
+     * sends those it listed: found without the naming rules, which refuse some IRIs a loaded
+     * document may hold.
+     */
+    private static Optional<OWLObjectProperty> byIri(Reference reference, String name) {
+        String trimmed = name.trim();
+        if (!(trimmed.startsWith("<") && trimmed.endsWith(">"))) {
+            return Optional.empty();
+        }
+        IRI iri = IRI.create(trimmed.substring(1, trimmed.length() - 1));
+        return reference.ontology().objectPropertiesInSignature(Imports.INCLUDED)
+                .filter(p -> p.getIRI().equals(iri)).findFirst();
     }
 
     private static <E extends org.semanticweb.owlapi.model.OWLEntity> E known(Reference reference, EntityType<E> type,

@@ -12,6 +12,9 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.stream.Collectors;
 import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.model.IRI;
 import org.semanticweb.owlapi.model.OWLAxiom;
@@ -37,7 +40,9 @@ import org.semanticweb.owlapi.reasoner.OWLReasoner;
  * <pre>
  * InProcessBatchBench ONTOLOGY LIST_SIZE LISTS WARMUP_LISTS REASONER BUFFERED_REASONER MAX_SECONDS
  * </pre>
- * Prints one JSON object per path on stdout; logging goes to stderr.
+ * Prints one JSON object per path on stdout; logging goes to stderr. After its lists (untimed) each
+ * path must hold every agent they added as a RobotInRoom, an inference from both kinds of directive,
+ * or the run fails: a figure of lists that did not do their work measures nothing.
  */
 public final class InProcessBatchBench {
     private static final String NS = "http://www.example.org/robotics#";
@@ -95,6 +100,25 @@ public final class InProcessBatchBench {
         return "agent" + list + "_" + index;
     }
 
+    /** robotics.owl's robot1 and the agents of {@code lists} lists: the RobotInRoom members they leave. */
+    private static Set<String> robotsInRooms(int lists, int listSize) {
+        Set<String> expected = new TreeSet<>(Set.of(NS + "robot1"));
+        for (int list = 0; list < lists; list++) {
+            for (int i = 0; i < listSize / 2; i++) {
+                expected.add(NS + agent(list, i));
+            }
+        }
+        return expected;
+    }
+
+    private static void check(String path, Set<String> found, int lists, int listSize) {
+        Set<String> expected = robotsInRooms(lists, listSize);
+        if (!found.equals(expected)) {
+            throw new IllegalStateException(path + ": " + found.size() + " robots in rooms after " + lists
+                    + " lists, expected " + expected.size());
+        }
+    }
+
     private static Result armorCore(Path ontology, int listSize, int lists, int warmupLists, String reasoner,
                                     boolean bufferedReasoner, double maxSeconds) {
         ArmorCore core = new ArmorCore(CoreConfig.defaults(ontology.getParent()));
@@ -113,6 +137,10 @@ public final class InProcessBatchBench {
                 throw new IllegalStateException("list " + list + " failed: " + answer.responses());
             }
         }
+        core.execute(Directive.of("bench", "batch", "REASON", "", ""));
+        Response robots = core.execute(Directive.of("bench", "batch", "QUERY", "IND", "CLASS", "RobotInRoom"));
+        check("armor_core", robots.queriedObjects().stream().map(iri -> iri.replaceAll("^<|>$", ""))
+                .collect(Collectors.toCollection(TreeSet::new)), timer.listsRun(), listSize);
         return timer.result("armor_core", listSize);
     }
 
@@ -141,6 +169,10 @@ public final class InProcessBatchBench {
             }
             timer.record(list, warmupLists, start);
         }
+        reasoner.flush();
+        check("owlapi", reasoner.getInstances(factory.getOWLClass(IRI.create(NS + "RobotInRoom")), false)
+                .entities().map(i -> i.getIRI().toString()).collect(Collectors.toCollection(TreeSet::new)),
+                timer.listsRun(), listSize);
         reasoner.dispose();
         return timer.result("owlapi", listSize);
     }
@@ -151,6 +183,7 @@ public final class InProcessBatchBench {
         private final long budgetNanos;
         private final List<Double> listSeconds = new ArrayList<>();
         private long deadline;
+        private int listsRun;
 
         Timer(int lists, double maxSeconds) {
             this.lists = lists;
@@ -169,9 +202,15 @@ public final class InProcessBatchBench {
         }
 
         void record(int list, int warmupLists, long startNanos) {
+            listsRun++;
             if (list >= warmupLists) {
                 listSeconds.add((System.nanoTime() - startNanos) / 1e9);
             }
+        }
+
+        /** Lists run so far, warm-up lists included. */
+        int listsRun() {
+            return listsRun;
         }
 
         Result result(String path, int listSize) {

@@ -18,15 +18,15 @@ class JournalLimitTest {
     @Test
     void aRecordTooLargeToReadBackIsRefusedAndTheJournalStaysValid() throws IOException {
         Path file = scratch.resolve("journal.log");
-        try (Journal journal = Journal.openForAppend(file, false)) {
+        try (Journal journal = Journal.openForAppend(Storage.FILES, file, false)) {
             journal.append("first".getBytes());
             IOException refused = assertThrows(IOException.class, () -> journal.append(new byte[(64 << 20) + 1]));
             assertEquals(true, refused.getMessage().contains("exceeds the journal's limit"));
             journal.append("second".getBytes());
         }
-        Journal.Contents contents = Journal.read(file);
+        Journal.Contents contents = Journal.parse(Files.readAllBytes(file));
         assertEquals(2, contents.records().size());
         assertEquals("second", new String(contents.records().get(1)));
-        assertEquals(false, contents.tornTail());
+        assertEquals(Journal.End.CLEAN, contents.end());
     }
 }

@@ -111,6 +111,21 @@ class ModularEquivalenceTest {
             "DisjointObjectProperties(:adjacentTo :connectedTo)", "EquivalentObjectProperties(:watchedBy :guardedBy)",
             "SubClassOf(:Watched ObjectSomeValuesFrom(:near :Room))");
     private static final long[] FIXED = {1, 2, 3, 4, 5};
+    /** The nominals of the schema: JFact reasons on the whole ontology with them (ModularReasoner says why). */
+    private static final List<String> NOMINAL_LINES = List.of(
+            "EquivalentClasses(:AtDock ObjectIntersectionOf(:Agent ObjectHasValue(:isIn :dock)))",
+            "EquivalentClasses(:Shift ObjectOneOf(:morning :evening)) SubClassOf(:Shift :Period)",
+            "ObjectPropertyRange(:onShift :Shift)");
+
+    private static String schema(String reasonerName) {
+        String schema = SCHEMA;
+        if (reasonerName.equals("JFACT")) {
+            for (String line : NOMINAL_LINES) {
+                schema = schema.replace(line, "");
+            }
+        }
+        return schema;
+    }
 
     private final Random random = new Random();
     private OWLOntologyManager manager;
@@ -120,15 +135,16 @@ class ModularEquivalenceTest {
     private final List<OWLNamedIndividual> rooms = new ArrayList<>();
     private final List<OWLNamedIndividual> agents = new ArrayList<>();
     private final List<OWLAxiom> propertyAxioms = new ArrayList<>();
+    private final List<OWLAxiom> passing = new ArrayList<>();
     private int fresh;
 
     static Stream<Arguments> seeds() {
         long perRun = Long.getLong("armor.seed", System.nanoTime() % 1_000_000);
         System.out.println("ModularEquivalenceTest: per-run seed " + perRun + " (rerun with -Darmor.seed=" + perRun
                 + ")");
-        return Stream.of(Arguments.of("HERMIT", FIXED[0], 90), Arguments.of("PELLET", FIXED[1], 90),
-                Arguments.of("HERMIT", FIXED[2], 90), Arguments.of("JFACT", FIXED[4], 40),
-                Arguments.of("HERMIT", perRun, 90), Arguments.of("PELLET", perRun + 1, 90));
+        return Stream.of(Arguments.of("HERMIT", FIXED[0], 75), Arguments.of("PELLET", FIXED[1], 75),
+                Arguments.of("HERMIT", FIXED[2], 75), Arguments.of("JFACT", FIXED[4], 40),
+                Arguments.of("HERMIT", perRun, 75), Arguments.of("PELLET", perRun + 1, 75));
     }
 
     @ParameterizedTest(name = "{0}, seed {1}, {2} changes")
@@ -138,7 +154,7 @@ class ModularEquivalenceTest {
         random.setSeed(seed);
         manager = OWLManager.createOWLOntologyManager();
         factory = manager.getOWLDataFactory();
-        ontology = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(SCHEMA));
+        ontology = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(schema(reasonerName)));
         for (String axiom : PROPERTY_AXIOMS) {
             propertyAxioms.add(parse(axiom));
         }
@@ -154,6 +170,7 @@ class ModularEquivalenceTest {
                 () -> run + ": the map must be cut into many modules, not " + loaded.lastUpdate());
         Set<OWLObjectProperty> loadedLinks = loaded.linkingProperties();
         int modularSteps = 0;
+        int baseSteps = 0;
         int manyModules = 0;
         java.util.Map<String, Integer> wholeBecause = new java.util.TreeMap<>();
         for (int step = 0; step < steps; step++) {
@@ -177,20 +194,23 @@ class ModularEquivalenceTest {
             ModularReasoner.LastUpdate update = modular.lastUpdate();
             // A change that names most individuals (a DifferentIndividuals of all) reasons on them all.
             long named = changes.stream().flatMap(c -> c.getAxiom().individualsInSignature()).distinct().count();
-            if (modular.linkingProperties().equals(loadedLinks) && !update.everything()
-                    && named * 2 <= update.individuals()) {
+            boolean baseLinks = modular.linkingProperties().equals(loadedLinks);
+            baseSteps += baseLinks ? 1 : 0;
+            if (baseLinks && !update.everything() && named * 2 <= update.individuals()) {
                 assertTrue(update.remade() * 2 <= update.individuals(),
                         () -> "most individuals must stay outside the modules reasoned on again: " + update + " after "
                                 + after);
             }
-            manyModules += update.modules() >= update.individuals() / 4 ? 1 : 0;
+            manyModules += baseLinks && update.modules() >= update.individuals() / 4 ? 1 : 0;
         }
         int modularDone = modularSteps;
         assertTrue(modularSteps > steps * 2 / 3, () -> run + ": most steps must exercise the modules, not the"
                 + " fallback: " + modularDone + "; whole because " + wholeBecause);
         int many = manyModules;
-        assertTrue(manyModules > modularSteps * 2 / 3, () -> run + ": the ABox must stay in many modules: " + many
-                + " of " + modularDone + " modular steps");
+        int base = baseSteps;
+        assertTrue(baseSteps > steps / 3, () -> run + ": most steps must keep the loaded links: " + base);
+        assertTrue(manyModules > baseSteps * 2 / 3, () -> run + ": the ABox must stay in many modules: " + many
+                + " of " + base + " modular steps with the loaded links");
         modular.dispose();
     }
 
@@ -204,7 +224,7 @@ class ModularEquivalenceTest {
         random.setSeed(seed);
         manager = OWLManager.createOWLOntologyManager();
         factory = manager.getOWLDataFactory();
-        ontology = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(SCHEMA));
+        ontology = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(schema(reasonerName)));
         OWLObjectProperty isIn = factory.getOWLObjectProperty(IRI.create(NS + "isIn"));
         OWLObjectProperty connectedTo = factory.getOWLObjectProperty(IRI.create(NS + "connectedTo"));
         List<OWLNamedIndividual> rooms = new ArrayList<>();
@@ -316,26 +336,31 @@ class ModularEquivalenceTest {
     }
 
     private List<OWLOntologyChange> randomChanges() {
+        // What reshapes links stays one step: the next step takes it away (the map's links are as loaded most steps).
+        if (!passing.isEmpty()) {
+            List<OWLOntologyChange> undo = passing.stream().filter(ontology::containsAxiom)
+                    .map(a -> (OWLOntologyChange) new RemoveAxiom(ontology, a)).toList();
+            passing.clear();
+            if (!undo.isEmpty()) {
+                return undo;
+            }
+        }
         // A nominal the ABox reaches (Charger is asserted): whole-ontology reasoning while it is there.
         OWLAxiom nominal = factory.getOWLSubClassOfAxiom(cls("Charger"),
                 factory.getOWLObjectHasValue(property("near"), individuals.get(0)));
-        if (ontology.containsAxiom(nominal) && random.nextInt(3) == 0) {
-            return List.of(new RemoveAxiom(ontology, nominal));
-        }
         int kind = random.nextInt(100);
         if (kind < 16) {
             return List.of(toggle(factory.getOWLClassAssertionAxiom(owlClass(), individual())));
         }
         if (kind < 21) {
-            return List.of(churn(ontology.axioms(AxiomType.CLASS_ASSERTION).filter(a -> a.getClassExpression()
-                    .isAnonymous()).toList(), factory.getOWLClassAssertionAxiom(classExpression(), individual())));
+            return passing(factory.getOWLClassAssertionAxiom(classExpression(), individual()));
         }
         if (kind < 52) {
             return edgeChange();
         }
         if (kind < 55) {
-            return List.of(churn(ontology.axioms(AxiomType.NEGATIVE_OBJECT_PROPERTY_ASSERTION).toList(),
-                    factory.getOWLNegativeObjectPropertyAssertionAxiom(randomProperty(), individual(), individual())));
+            return passing(factory.getOWLNegativeObjectPropertyAssertionAxiom(randomProperty(), individual(),
+                    individual()));
         }
         if (kind < 60) {
             return List.of(toggle(factory.getOWLDataPropertyAssertionAxiom(
@@ -363,26 +388,25 @@ class ModularEquivalenceTest {
             return List.of(toggle(factory.getOWLSubClassOfAxiom(owlClass(), owlClass())));
         }
         if (kind < 93) {
-            // A property axiom comes and, more often, goes: the schema is as loaded most of the time.
-            List<OWLAxiom> present = propertyAxioms.stream().filter(ontology::containsAxiom).toList();
-            if (!present.isEmpty() && random.nextInt(3) > 0) {
-                return List.of(new RemoveAxiom(ontology, present.get(random.nextInt(present.size()))));
-            }
-            return List.of(toggle(propertyAxioms.get(random.nextInt(propertyAxioms.size()))));
+            return passing(propertyAxioms.get(random.nextInt(propertyAxioms.size())));
         }
         if (kind < 95) {
             // An edge into the enumeration only the schema names: its range makes the target one of them.
-            return List.of(churn(ontology.axioms(AxiomType.OBJECT_PROPERTY_ASSERTION).filter(e -> e.getProperty()
-                    .getNamedProperty().getIRI().getShortForm().equals("onShift")).toList(),
-                    edge("onShift", individual(), individual())));
+            return passing(edge("onShift", individual(), individual()));
         }
-        return List.of(new AddAxiom(ontology, nominal));
+        return passing(nominal);
     }
 
     /** Half the time an existing edge goes, else one of the map's shapes is added: the density stays. */
     private List<OWLOntologyChange> edgeChange() {
         List<OWLObjectPropertyAssertionAxiom> edges = ontology.axioms(AxiomType.OBJECT_PROPERTY_ASSERTION)
                 .filter(e -> !e.getProperty().getNamedProperty().getIRI().getShortForm().equals("onShift")).toList();
+        // Edges off the map's own shapes (random properties between random individuals) go first.
+        List<OWLObjectPropertyAssertionAxiom> odd = edges.stream().filter(e -> !List.of("isIn", "partOf",
+                "adjacentTo").contains(e.getProperty().getNamedProperty().getIRI().getShortForm())).toList();
+        if (!odd.isEmpty() && random.nextBoolean()) {
+            return List.of(new RemoveAxiom(ontology, odd.get(random.nextInt(odd.size()))));
+        }
         if (random.nextBoolean() && !edges.isEmpty()) {
             return List.of(new RemoveAxiom(ontology, edges.get(random.nextInt(edges.size()))));
         }
@@ -418,12 +442,13 @@ class ModularEquivalenceTest {
         };
     }
 
-    /** Two times in three one of {@code present} goes (so what reshapes links does not pile up), else {@code axiom} toggles. */
-    private OWLOntologyChange churn(List<? extends OWLAxiom> present, OWLAxiom axiom) {
-        if (!present.isEmpty() && random.nextInt(3) > 0) {
-            return new RemoveAxiom(ontology, present.get(random.nextInt(present.size())));
+    /** An axiom that reshapes links, added for one step (the next takes it away). */
+    private List<OWLOntologyChange> passing(OWLAxiom axiom) {
+        if (ontology.containsAxiom(axiom)) {
+            return List.of(new RemoveAxiom(ontology, axiom));
         }
-        return toggle(axiom);
+        passing.add(axiom);
+        return List.of(new AddAxiom(ontology, axiom));
     }
 
     private OWLOntologyChange toggle(OWLAxiom axiom) {

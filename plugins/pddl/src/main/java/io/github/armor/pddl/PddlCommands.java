@@ -7,17 +7,17 @@ import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.command.CommandGroup;
 import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.reference.AllowedPaths;
+import io.github.armor.core.reference.WritablePaths;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.List;
 
 /**
  * The planner bridge's commands (docs/pddl.md): a PDDL problem generated from what a reference
- * knows, under a mapping given as a file inside allowed_dirs or as the text itself.
+ * knows, under a mapping given as a file inside allowed_dirs or as the text itself; SAVE writes
+ * inside write_dirs only, as the core's SAVE.
  */
 public final class PddlCommands implements CommandGroup {
     /** Larger mapping files are refused (a mapping is a few dozen lines). */
@@ -25,14 +25,16 @@ public final class PddlCommands implements CommandGroup {
 
     @Override
     public void register(CommandTable table) {
-        table.command("QUERY PDDL PROBLEM").args("mapping")
+        table.command("QUERY PDDL PROBLEM").args("mapping path or text")
                 .summary("a PDDL problem from the reference's asserted and inferred knowledge (docs/pddl.md)")
                 .query(c -> c.ok(List.of(problem(c).text())));
-        table.command("SAVE PDDL PROBLEM").args("mapping", "path")
-                .summary("write that PDDL problem to a file inside allowed_dirs")
+        table.command("SAVE PDDL PROBLEM").args("mapping path or text", "path")
+                .summary("write that PDDL problem to a file inside write_dirs")
                 .onReference(c -> {
-                    PddlProblem problem = problem(c);
-                    write(new AllowedPaths(c.config().allowedDirs()).check(c.arg(1)), problem.text());
+                    WritablePaths writable = WritablePaths.of(c.config());
+                    Path target = writable.check(c.arg(1));
+                    String text = problem(c).text();
+                    writable.write(target, out -> out.write(text.getBytes(StandardCharsets.UTF_8)));
                     return c.ok();
                 });
     }
@@ -47,10 +49,10 @@ public final class PddlCommands implements CommandGroup {
         if (trimmed.startsWith("{") || trimmed.contains("\n")) {
             return argument;
         }
-        Path file = new AllowedPaths(c.config().allowedDirs()).check(trimmed);
+        Path file = AllowedPaths.forReading(c.config()).check(trimmed);
         try {
             if (!Files.isRegularFile(file)) {
-                throw new ArmorException(ExitCode.LOAD_FAILED, "mapping file '" + trimmed + "' does not exist");
+                throw new ArmorException(ExitCode.LOAD_FAILED, "mapping file " + file + " does not exist");
             }
             if (Files.size(file) > MAX_MAPPING_BYTES) {
                 throw new ArmorException(ExitCode.TOO_LARGE, "mapping file '" + trimmed + "' is larger than "
@@ -59,27 +61,6 @@ public final class PddlCommands implements CommandGroup {
             return Files.readString(file, StandardCharsets.UTF_8);
         } catch (IOException e) {
             throw new ArmorException(ExitCode.LOAD_FAILED, "mapping file '" + trimmed + "' could not be read: "
-                    + e.getMessage(), e);
-        }
-    }
-
-    /** Writes beside the target first and renames, so a reader never sees half a problem. */
-    private static void write(Path target, String text) {
-        Path partial = target.resolveSibling("." + target.getFileName() + ".partial");
-        try {
-            Files.writeString(partial, text, StandardCharsets.UTF_8);
-            try {
-                Files.move(partial, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(partial, target, StandardCopyOption.REPLACE_EXISTING);
-            }
-        } catch (IOException e) {
-            try {
-                Files.deleteIfExists(partial);
-            } catch (IOException ignored) {
-                // the write failed already; that is what the client hears
-            }
-            throw new ArmorException(ExitCode.LOAD_FAILED, "could not write the PDDL problem to '" + target + "': "
                     + e.getMessage(), e);
         }
     }

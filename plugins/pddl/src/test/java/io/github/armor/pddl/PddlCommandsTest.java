@@ -38,8 +38,8 @@ class PddlCommandsTest {
     void loadTheTutorial() {
         CommandTable table = CommandTable.load(PddlCommandsTest.class.getClassLoader());
         assertEquals("classes", table.find("QUERY PDDL PROBLEM").orElseThrow().origin());
-        core = new ArmorCore(CoreConfig.defaults(REPO.resolve("ontologies"), REPO.resolve("examples"), scratch),
-                table);
+        core = new ArmorCore(CoreConfig.defaults(REPO.resolve("ontologies"), REPO.resolve("examples"), scratch)
+                .withWriting(CoreConfig.Writing.into(scratch)), table);
         ok("LOAD FILE", SURVEILLANCE.toString(), "", "false", "PELLET", "false");
     }
 
@@ -201,12 +201,18 @@ class PddlCommandsTest {
     }
 
     @Test
-    void saveWritesTheSameProblemInsideAllowedDirsOnly() throws Exception {
-        Path target = scratch.resolve("patrol.pddl");
+    void saveWritesTheSameProblemInsideWriteDirsOnly() throws Exception {
+        Path target = scratch.resolve("plans/patrol.pddl");
         ok("SAVE PDDL PROBLEM", MAPPING.toString(), target.toString());
         assertEquals(problem(MAPPING.toString()), Files.readString(target));
         Response outside = run("s", "SAVE PDDL PROBLEM", MAPPING.toString(), "/etc/patrol.pddl");
         assertEquals(ExitCode.PATH_NOT_ALLOWED.code(), outside.exitCode(), outside.errorDescription());
+        // Readable is not writable: the examples folder the mapping comes from is never written.
+        Response examples = run("s", "SAVE PDDL PROBLEM", MAPPING.toString(),
+                REPO.resolve("examples/patrol.pddl").toString());
+        assertEquals(ExitCode.PATH_NOT_ALLOWED.code(), examples.exitCode(), examples.errorDescription());
+        Response hidden = run("s", "SAVE PDDL PROBLEM", MAPPING.toString(), scratch.resolve(".bashrc").toString());
+        assertEquals(ExitCode.PATH_NOT_ALLOWED.code(), hidden.exitCode(), hidden.errorDescription());
     }
 
     @Test

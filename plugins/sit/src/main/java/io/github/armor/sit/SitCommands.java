@@ -1,0 +1,159 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.sit;
+
+import io.github.armor.core.api.ArmorException;
+import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.api.Response;
+import io.github.armor.core.command.CommandContext;
+import io.github.armor.core.command.CommandGroup;
+import io.github.armor.core.command.CommandTable;
+import io.github.armor.core.command.Inferences;
+import io.github.armor.core.reference.ReasonerRegistry;
+import io.github.armor.core.reference.Reference;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.stream.Stream;
+import org.semanticweb.owlapi.model.EntityType;
+import org.semanticweb.owlapi.model.IRI;
+import org.semanticweb.owlapi.model.OWLClass;
+import org.semanticweb.owlapi.model.OWLClassExpression;
+import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.OWLOntologyChange;
+import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
+import org.semanticweb.owlapi.search.EntitySearcher;
+
+/**
+ * The scene commands (docs/scenes.md), and the one place this plugin meets the core: every core
+ * type it uses is named in this file, so a change of the core's plugin interface is a change here
+ * only. SIT SCENE recognises a scene and learns it when new, as one journaled change of its
+ * reference; QUERY SIT SCENES lists the learned classes in the reasoner's hierarchy; QUERY SIT
+ * RECENT shows the last scenes with their recognitions explained.
+ */
+public final class SitCommands implements CommandGroup {
+    private final RecentScenes recent = new RecentScenes();
+
+    @Override
+    public void register(CommandTable table) {
+        table.command("SIT SCENE").args("learning_threshold", "position_threshold", "axis_threshold", "elements")
+                .summary("recognise a scene of primitives (elements: 'TYPE x y z [ax ay az]; ...') under the"
+                        + " scene classes learned so far, and learn it as a new class unless one is more similar"
+                        + " than learning_threshold (docs/scenes.md)")
+                .manipulation(this::scene);
+        table.command("QUERY SIT SCENES")
+                .summary("the learned scene classes: definition in words, cardinality, the scenes each contains"
+                        + " (one JSON object each)")
+                .query(c -> c.ok(SceneHierarchy.of(new CoreReference(c)).stream()
+                        .map(p -> SceneJson.sceneClass(p.owlClass(), p.definition(), p.parents(), p.equivalents(),
+                                c.render()::entity).toString())
+                        .toList()));
+        table.command("QUERY SIT RECENT")
+                .summary("the last scenes of this reference in this session, each recognition explained (one JSON"
+                        + " object each, newest first)")
+                .query(c -> c.ok(recent.of(c.reference()).stream().map(Object::toString).toList()));
+    }
+
+    private Response scene(CommandContext c) {
+        SceneTeacher.Outcome outcome;
+        try {
+            double threshold = Scene.learningThreshold(c.arg(0));
+            Scene scene = Scene.parse(c.arg(3), c.arg(1), c.arg(2));
+            outcome = SceneTeacher.evaluate(new CoreReference(c), scene, threshold);
+        } catch (InvalidScene e) {
+            throw new ArmorException(switch (e.kind()) {
+                case SHAPE -> ExitCode.WRONG_ARGUMENTS;
+                case VALUE -> ExitCode.BAD_DATA_TYPE;
+                case TOO_LARGE -> ExitCode.TOO_LARGE;
+                case INCONSISTENT -> ExitCode.INCONSISTENT;
+            }, e.getMessage() + "; nothing changed");
+        }
+        if (!c.replaying()) {
+            recent.record(c.reference(), SceneJson.outcome(outcome, c.directive().clientName(),
+                    System.currentTimeMillis(), c.render()::entity));
+        }
+        List<String> answer = new ArrayList<>();
+        outcome.learned().ifPresent(learned -> answer.add("learned " + c.render().entity(learned)));
+        for (SceneTeacher.Recognition recognition : outcome.recognitions()) {
+            answer.add("recognised " + c.render().entity(recognition.owlClass()) + " " + recognition.similarity());
+        }
+        return c.ok(answer);
+    }
+
+    /** A reference as the scene logic sees it, over the core's command context. */
+    private static final class CoreReference implements SceneReference {
+        private final Reference reference;
+
+        CoreReference(CommandContext context) {
+            this.reference = context.reference();
+        }
+
+        @Override
+        public OWLOntology ontology() {
+            return reference.ontology();
+        }
+
+        @Override
+        public OWLDataFactory factory() {
+            return reference.factory();
+        }
+
+        @Override
+        public IRI iri(EntityType<?> type, String name) {
+            return reference.names().iri(type, name);
+        }
+
+        @Override
+        public void enact(List<OWLOntologyChange> changes) {
+            // APPLY first, so that the transaction keeps the waiting changes as they were: a
+            // rollback restores them and undoes the scene's, which were applied on their own.
+            reference.applyPending();
+            reference.change(changes);
+            reference.applyPending();
+        }
+
+        @Override
+        public Set<OWLClass> types(OWLNamedIndividual individual) {
+            if (reference.settings().bufferedReasoner()) {
+                reference.synchroniseReasoner();
+            }
+            return named(EntitySearcher.getTypes(individual, Inferences.closure(reference)),
+                    Inferences.inferred(reference, r -> r.getTypes(individual, false).entities()));
+        }
+
+        @Override
+        public boolean consistent() {
+            return reference.isConsistent();
+        }
+
+        @Override
+        public OWLReasonerFactory reasonerFactory() {
+            return ReasonerRegistry.factory(reference.reasonerName());
+        }
+
+        @Override
+        public Object identity() {
+            return reference;
+        }
+
+        @Override
+        public Set<OWLClass> superClasses(OWLClass owlClass) {
+            return named(EntitySearcher.getSuperClasses(owlClass, Inferences.closure(reference)),
+                    Inferences.inferred(reference, r -> r.getSuperClasses(owlClass, false).entities()));
+        }
+
+        @Override
+        public Set<OWLClass> equivalentClasses(OWLClass owlClass) {
+            Set<OWLClass> equivalents = named(EntitySearcher.getEquivalentClasses(owlClass, Inferences.closure(reference)),
+                    Inferences.inferred(reference, r -> r.getEquivalentClasses(owlClass).entities()));
+            equivalents.remove(owlClass);
+            return equivalents;
+        }
+
+        private static Set<OWLClass> named(Stream<OWLClassExpression> asserted, Stream<OWLClass> inferred) {
+            return Inferences.union(asserted.filter(e -> !e.isAnonymous()).map(OWLClassExpression::asOWLClass), inferred);
+        }
+
+    }
+}
