@@ -1,5 +1,5 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-"""Benchmark 10 (issue 36), KnowRob's upper ontology: SOMA-HOME (on DUL) under a kitchen ABox.
+"""Benchmark 11 (issue 36), KnowRob's upper ontology: SOMA-HOME (on DUL) under a kitchen ABox.
 
     python bench/soma.py [--smoke] [--sizes 100,1000] [--reasoners HERMIT]
 

@@ -1,7 +1,7 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 """KnowRob's upper ontology over ROS 2 (issue 36): a kitchen of 40 individuals on SOMA-HOME and
 DUL is loaded, changed, reasoned on and asked within a generous bound, with the right answers.
-A regression check, not a timing claim: bench/soma.py measures (bench/REPORT.md, section 10).
+A regression check, not a timing claim: bench/soma.py measures (bench/REPORT.md, section 11).
 Before issue 36 the REASON alone ran for over 300 s on 12 individuals.
 """
 
