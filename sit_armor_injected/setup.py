@@ -6,7 +6,7 @@ package_name = 'sit_armor_injected'
 
 setup(
     name=package_name,
-    version='0.3.0',
+    version='0.4.0',
     packages=[package_name],
     data_files=[
         ('share/ament_index/resource_index/packages', ['resource/' + package_name]),

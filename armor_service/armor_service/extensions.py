@@ -14,13 +14,13 @@ installed package provides stops the node, naming the installed ones (like a mis
 parameter).
 """
 
-import functools
 import importlib.metadata
 import traceback
 from typing import Any, Callable, List, Optional, Sequence
 
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
+from armor_service.callback_guard import guarded
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.node import Node
 
@@ -118,16 +118,7 @@ class ExtensionContext:
                                        callback_group=self.callback_group)
 
     def _guarded(self, callback: Callable, what: str) -> Callable:
-        @functools.wraps(callback)
-        def run(*args: Any) -> Any:
-            try:
-                return callback(*args)
-            except Exception:
-                self.logger.error(f'{what} of extension {self.name} failed:\n'
-                                  f'{traceback.format_exc().rstrip()}')
-                # A service callback gets (request, response): answer the empty response.
-                return args[1] if len(args) == 2 else None
-        return run
+        return guarded(callback, self.logger, f'{what} of extension {self.name}')
 
 
 class Extensions:

@@ -18,6 +18,7 @@ from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
 from armor_msgs.msg import ArmorChange
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service import wire
+from armor_service.callback_guard import guarded
 from armor_service.core_process import CoreProcess, CoreUnavailable
 from armor_service.extensions import load_extensions
 from armor_service.installation import code_dirs
@@ -57,11 +58,14 @@ class ArmorService(Node):
             self, self._core, group, lambda: self._value('subscription_idle_s'),
             lambda: self._value('subscriptions_per_client'))
         self._core.start()
-        self.create_service(ArmorDirective, DIRECTIVE_SERVICE, self.directive_callback,
+        self.create_service(ArmorDirective, DIRECTIVE_SERVICE,
+                            guarded(self.directive_callback, self.get_logger(),
+                                    f'service {DIRECTIVE_SERVICE}', _refuse_directive),
                             qos_profile=SERVICE_QOS, callback_group=group)
         self.create_service(ArmorDirectiveList, LIST_SERVICE,
-                            self.directive_list_callback, qos_profile=SERVICE_QOS,
-                            callback_group=group)
+                            guarded(self.directive_list_callback, self.get_logger(),
+                                    f'service {LIST_SERVICE}', _refuse_list),
+                            qos_profile=SERVICE_QOS, callback_group=group)
         self._extensions = load_extensions(self, self._value('extensions'))
         self._web_view = self._start_web_view()
         self.get_logger().info(
@@ -182,12 +186,15 @@ class ArmorService(Node):
         name = self._value('preload_reference')
         lost = [d for d in damage if d.get('reference') == name and d.get('restored') is False]
         if lost:
-            # Loading the file over it would hide the loss: the robot's changes would seem gone for no reason.
+            # Loading the file over it would hide the loss: the robot's changes would seem gone
+            # for no reason.
+            problems = '; '.join(lost[-1].get('problems', []))
             self.get_logger().error(
                 f'reference "{name}" could not be restored from the state directory '
-                f'({"; ".join(lost[-1].get("problems", []))}); NOT preloading {path} over it. Its files '
+                f'({problems}); NOT preloading {path} over it. Its files '
                 f'are in {lost[-1].get("kept_in")}. To start from {path} anyway, move that folder '
-                'away (keep it to recover by hand) and restart, or start with -p restore_state:=false')
+                'away (keep it to recover by hand) and restart, or start with '
+                '-p restore_state:=false')
             return
         listing = {'client_name': 'armor_service', 'reference_name': '', 'command': 'GET',
                    'primary_command_spec': 'ALL', 'secondary_command_spec': 'REFS', 'args': []}
@@ -261,6 +268,16 @@ class ArmorService(Node):
                 isinstance(item, str) for item in value)):
             raise RuntimeError(f'parameter {parameter.name} must be a string array or one string, '
                                f'got {value!r}')
+
+
+def _refuse_directive(request, response, description: str) -> None:
+    response.armor_response = wire.error_response(ExitCode.INTERNAL_ERROR, description)
+
+
+def _refuse_list(request, response, description: str) -> None:
+    response.success = False
+    response.armor_responses = [wire.error_response(ExitCode.INTERNAL_ERROR, description)
+                                for _ in request.armor_requests]
 
 
 def main(args=None, on_ready=None):

@@ -29,6 +29,7 @@ from armor_contract.services import SERVICE_QOS
 from armor_msgs.msg import ArmorAnswer
 from armor_msgs.srv import ArmorSubscribe, ArmorUnsubscribe
 from armor_service import wire
+from armor_service.callback_guard import guarded
 from armor_service.core_process import CoreProcess, CoreUnavailable
 from rclpy.event_handler import PublisherEventCallbacks
 
@@ -81,11 +82,17 @@ class SubscriptionTopics:
         self._free_topics: List[str] = []
         self._draining_topics: List[str] = []
         core.add_event_listener(self.on_core_event)
-        node.create_service(ArmorSubscribe, SUBSCRIBE_SERVICE, self.subscribe_callback,
+        logger = node.get_logger()
+        node.create_service(ArmorSubscribe, SUBSCRIBE_SERVICE,
+                            guarded(self.subscribe_callback, logger,
+                                    f'service {SUBSCRIBE_SERVICE}', _refuse),
                             qos_profile=SERVICE_QOS, callback_group=callback_group)
-        node.create_service(ArmorUnsubscribe, UNSUBSCRIBE_SERVICE, self.unsubscribe_callback,
+        node.create_service(ArmorUnsubscribe, UNSUBSCRIBE_SERVICE,
+                            guarded(self.unsubscribe_callback, logger,
+                                    f'service {UNSUBSCRIBE_SERVICE}', _refuse),
                             qos_profile=SERVICE_QOS, callback_group=callback_group)
-        node.create_timer(1.0, self.end_abandoned, callback_group=callback_group)
+        node.create_timer(1.0, guarded(self.end_abandoned, logger, 'the subscription sweep'),
+                          callback_group=callback_group)
 
     def __len__(self) -> int:
         """How many subscriptions the node holds."""
@@ -251,3 +258,10 @@ class SubscriptionTopics:
         message = wire.answer_from_json(subscription.id, subscription.sequence, event)
         subscription.sequence += 1
         subscription.publisher.publish(message)
+
+
+def _refuse(request, response, description: str) -> None:
+    response.success = False
+    if hasattr(response, 'exit_code'):
+        response.exit_code = ExitCode.INTERNAL_ERROR
+    response.error_description = description

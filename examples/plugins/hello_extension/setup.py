@@ -9,7 +9,7 @@ from setuptools import setup
 
 setup(
     name='armor-hello-extension',
-    version='0.3.0',
+    version='0.4.0',
     packages=['armor_hello_extension'],
     description='Example extension of the ARMOR node: a service and a directive topic',
     license='Apache-2.0',
