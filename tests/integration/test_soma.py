@@ -7,20 +7,46 @@ Before issue 36 the REASON alone ran for over 300 s on 12 individuals.
 
 import time
 
+import pytest
+from conftest import start_node
 from soma_kitchen import DEFINED_CLASS, SOMA, KitchenABox
 
-# Generous: on an idle 2-core machine the whole test takes well under a minute.
+# Generous: on an idle 2-core machine the whole test takes well under a minute. The node's
+# reasoner time limit is the same bound, so a machine busy with other work slows the test down
+# instead of failing it (the default 30 s is a robot's setting, not this check's).
 BOUND_S = 600
 INSIDE = f'<{SOMA}isInsideOf>'
+NAMESPACE = '/soma_test'
 
 
 def names(answer) -> list:
     return sorted(iri.rstrip('>').rsplit('#', 1)[-1] for iri in answer.queried_objects)
 
 
-def test_a_kitchen_on_soma_home_answers_a_change_reason_and_query(armor_node, call):
+@pytest.fixture(scope='module')
+def soma_node(tmp_path_factory):
+    node = start_node(tmp_path_factory.mktemp('soma'), '-p',
+                      f'reasoner_timeout_ms:={BOUND_S * 1000}', namespace=NAMESPACE)
+    yield node
+    node.stop()
+
+
+@pytest.fixture
+def call(soma_node):
+    from armor_client import ArmorTransport, directive
+    transport = ArmorTransport(namespace=NAMESPACE, service_wait_s=120.0)
+
+    def send(reference, words, *args, timeout_s=120):
+        command, primary, secondary = (words.split() + ['', '', ''])[:3]
+        return transport.call(directive('test', reference, command, primary, secondary, args),
+                              timeout_s=timeout_s)
+    yield send
+    transport.close()
+
+
+def test_a_kitchen_on_soma_home_answers_a_change_reason_and_query(soma_node, call):
     kitchen = KitchenABox(40)
-    path = kitchen.write(armor_node.scratch / 'soma')
+    path = kitchen.write(soma_node.scratch / 'soma')
     started = time.monotonic()
     try:
         loaded = call('soma_kitchen', 'LOAD FILE', str(path), '', 'false', 'HERMIT', 'false',
@@ -42,6 +68,7 @@ def test_a_kitchen_on_soma_home_answers_a_change_reason_and_query(armor_node, ca
         assert names(after) == kitchen.containers_with_cup()
         assert move.new in names(after) and names(after) != names(first)
         elapsed = time.monotonic() - started
+        print(f'{statement}; LOAD to the last answer in {elapsed:.1f} s')
         assert elapsed < BOUND_S, elapsed
     finally:
         # DROP also stops the schema's classification if it still runs in the background.
