@@ -11,10 +11,13 @@ import pytest
 from conftest import start_node
 from soma_kitchen import DEFINED_CLASS, SOMA, KitchenABox
 
-# Generous: on an idle 2-core machine the whole test takes well under a minute. The node's
-# reasoner time limit is the same bound, so a machine busy with other work slows the test down
-# instead of failing it (the default 30 s is a robot's setting, not this check's).
-BOUND_S = 600
+# Generous: the reasoning takes about 65 s of CPU for the LOAD, the move and REASON (with the
+# schema's classification on the other core); on a 2-core machine shared with other work (load
+# average 25) the whole test took 758 s, every answer right. The node's reasoner time limit is
+# the same bound, so such a machine slows the test down instead of failing it with 211 (the
+# default 30 s is a robot's setting, not this check's). Before issue 36 REASON alone ran for
+# over 300 s on 12 individuals (the issue's figure).
+BOUND_S = 900
 INSIDE = f'<{SOMA}isInsideOf>'
 NAMESPACE = '/soma_test'
 
