@@ -54,6 +54,16 @@ def _names(answer) -> List[str]:
     return sorted(iri.rstrip('>').rsplit('#', 1)[-1] for iri in answer.queried_objects)
 
 
+def _core_cpu_s(node: BenchNode) -> float:
+    """CPU seconds the node's knowledge core has used (every thread, the background
+    classification's too): on a machine shared with other work, the figure wall time hides."""
+    if not hasattr(node, 'core_pid'):
+        node.core_pid = node.process.core_pid()
+    stat = pathlib.Path(f'/proc/{node.core_pid}/stat').read_text()
+    fields = stat.rsplit(')', 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
+
+
 class _Session:
     """One reference on one node, its directives timed against one budget."""
 
@@ -101,18 +111,22 @@ def run_modular(node: BenchNode, port: int, path: pathlib.Path, individuals: int
     result = {'load_s': None, 'first_s': None, 'cycles': [], 'wrong': 0, 'moves': [],
               'answers': [], 'note': '', 'statement': ''}
     try:
+        cpu = _core_cpu_s(node)
         result['load_s'], loaded = session.call('LOAD FILE', str(path), '', 'false', reasoner,
                                                 'false')
+        result['load_cpu_s'] = _core_cpu_s(node) - cpu
         result['statement'] = loaded.error_description
         result['first_s'], first = session.call('QUERY IND CLASS', DEFINED_CLASS)
         result['wrong'] += _names(first) != kitchen.containers_with_cup()
         for _ in range(min(cycles, kitchen.moves_left)):
             move = kitchen.next_move()
+            cpu = _core_cpu_s(node)
             change, _ = session.call('REPLACE OBJECTPROP IND', INSIDE, move.item, move.new,
                                      move.old)
             reason, _ = session.call('REASON')
             query, answer = session.call('QUERY IND CLASS', DEFINED_CLASS)
             result['cycles'].append({'change': change, 'reason': reason, 'query': query})
+            result.setdefault('cycle_cpu_s', []).append(_core_cpu_s(node) - cpu)
             result['moves'].append([move.item, move.new, move.old])
             result['answers'].append(_names(answer))
             result['wrong'] += _names(answer) != kitchen.containers_with_cup()
@@ -160,7 +174,8 @@ def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, scale: str,
             node = BenchNode(scratch, snapshot, parameters={
                 'web_port': str(port), 'reasoner_timeout_ms': str(budget * 1000)})
             try:
-                modular = run_modular(node, port, path, individuals, reasoner, CYCLES[scale], budget)
+                modular = run_modular(node, port, path, individuals, reasoner, CYCLES[scale],
+                                      budget)
             finally:
                 node.stop()
             entry = {'modular': modular}
@@ -183,6 +198,10 @@ def _p50_ms(cycles: List[dict], part: str = '') -> Optional[float]:
     return statistics.median(sum(c.values()) if not part else c[part] for c in cycles) * 1000
 
 
+def _median_ms(seconds: Optional[List[float]]) -> Optional[float]:
+    return statistics.median(seconds) * 1000 if seconds else None
+
+
 def _ms(value: Optional[float]) -> str:
     return '-' if value is None else (f'{value:,.0f} ms' if value >= 10 else f'{value:.1f} ms')
 
@@ -193,10 +212,11 @@ def _s(value: Optional[float]) -> str:
 
 def render(results: Dict[int, dict]) -> str:
     """The section's Markdown: one row per size and reasoner, the whole-ontology check beside."""
-    lines = ['| individuals | reasoner | LOAD | classification (background) | first answer | cycles '
-             '| cycle p50 | change / REASON / query p50 | cycle max | answers right | '
+    lines = ['| individuals | reasoner | LOAD | classification (background) | first answer '
+             '| cycles | cycle p50 | change / REASON / query p50 | cycle max | core CPU: LOAD, cycle p50 | '
+             'answers right | '
              'whole-ontology reasoner on the same moves | note |',
-             '|---|---|---|---|---|---|---|---|---|---|---|---|']
+             '|---|---|---|---|---|---|---|---|---|---|---|---|---|']
     for individuals, by_reasoner in results.items():
         for reasoner, entry in by_reasoner.items():
             run = entry['modular']
@@ -217,6 +237,8 @@ def render(results: Dict[int, dict]) -> str:
                 _s(run['first_s']), str(len(cycles)), _ms(_p50_ms(cycles)),
                 ' / '.join(_ms(_p50_ms(cycles, part)) for part in ('change', 'reason', 'query')),
                 _ms(max(sum(c.values()) for c in cycles) * 1000 if cycles else None),
+                f'{_s(run.get("load_cpu_s"))}, '
+                f'{_ms(_median_ms(run.get("cycle_cpu_s")))}',
                 ('yes' if not run['wrong'] else f'**{run["wrong"]} wrong**') if cycles else '-',
                 check, (f'load average {run["load_average"]:.0f}; ' if run.get('load_average')
                         else '') + run['note'][:140].replace('|', '/')]) + ' |')
