@@ -214,7 +214,8 @@ def render(results: Dict[int, dict]) -> str:
     """The section's Markdown: one row per size and reasoner, the whole-ontology check beside."""
     lines = ['| individuals | reasoner | LOAD | classification (background) | first answer '
              '| cycles | cycle p50 | change / REASON / query p50 | cycle max '
-             '| core CPU: LOAD, cycle p50 | answers right | whole-ontology reasoner on the same moves | note |',
+             '| core CPU: LOAD, cycle p50 | answers right '
+             '| whole-ontology reasoner on the same moves | note |',
              '|---|---|---|---|---|---|---|---|---|---|---|---|---|']
     for individuals, by_reasoner in results.items():
         for reasoner, entry in by_reasoner.items():
