@@ -225,7 +225,8 @@ function renderReferenceList() {
     const rows = [
       ['reasoner', r.reasoner],
       ['reasoning', r.reasoning],
-      ['classes', r.busy ? '…' : r.classes],
+      ['profile', r.profile],
+      ['classes', r.busy ? '…' : (r.classification || r.classes)],
       ['individuals', r.busy ? '…' : r.individuals],
       ['axioms', r.busy ? '…' : r.axioms],
     ];
@@ -252,7 +253,8 @@ function renderSummary() {
     summary.mounted_by ? `mounted by ${summary.mounted_by}${leaseText(summary)}` : 'not mounted',
   ];
   if (!summary.busy) {
-    parts.push(`${summary.classes} classes`, `${summary.individuals} individuals`,
+    parts.push(`profile ${summary.profile}`, summary.classification || `${summary.classes} classes`,
+      `${summary.individuals} individuals`,
       `${summary.axioms} axioms (${summary.logical_axioms} logical)`);
     if (summary.pending_changes) parts.push('changes waiting for APPLY');
   } else {
@@ -428,7 +430,10 @@ function renderGraph(data) {
   note.textContent = data.truncated
     ? `${shown}: a sample of ${data.candidates}, grown from ${graphChoice().focus || 'the first by name'}`
       + ' (choose a class or an individual to look around it)'
-    : `${shown}. Solid: asserted; dashed: inferred. Colour: most specific type.`;
+    : data.inferred_links === false
+      ? `${shown}. Links as asserted (read without waiting for the reasoner; an individual's page shows`
+        + ' inferred ones). Colour: most specific type.'
+      : `${shown}. Solid: asserted; dashed: inferred. Colour: most specific type.`;
   if (!window.cytoscape) {
     note.textContent = 'The graph library is missing (armor_service/web/static/vendor): run make setup.';
     return;

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Consumer;
+import io.github.armor.core.reasoning.ModularReasoner;
 import openllet.aterm.ATermAppl;
 import openllet.core.KnowledgeBase;
 import openllet.core.utils.ATermUtils;
@@ -40,6 +41,9 @@ final class ReasonerAnswers {
     static Map<OWLClass, Set<String>> instances(OWLReasoner reasoner, List<OWLClass> classes,
                                                Set<String> individuals) {
         Map<OWLClass, Set<String>> instances = new HashMap<>();
+        if (reasoner instanceof ModularReasoner modular) {
+            modular.realiseAgainst(classes);
+        }
         for (OWLClass owlClass : classes) {
             if (owlClass.isOWLThing()) {
                 continue;

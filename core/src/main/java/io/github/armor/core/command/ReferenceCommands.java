@@ -221,7 +221,7 @@ public final class ReferenceCommands implements CommandGroup {
         if (mount) {
             takeMount(reference, client);
         }
-        String statement = reference.loadStatement().text();
+        String statement = (source == null ? reference.createStatement() : reference.loadStatement()).text();
         if (!statement.isEmpty()) {
             warnings.append(warnings.isEmpty() ? "" : "; ").append(statement);
         }

@@ -62,12 +62,13 @@ public final class StateQueries {
 
     private static Optional<List<String>> types(Reference reference, InferredState state, String argument,
                                                 boolean direct, Predicate<OWLEntity> known, Rendering rendering) {
-        return named(reference, EntityType.NAMED_INDIVIDUAL, argument, known).map(individual -> {
+        return named(reference, EntityType.NAMED_INDIVIDUAL, argument, known).flatMap(individual -> {
             if (!state.consistent()) {
-                return rendering.entities(inconsistent(reference));
+                return Optional.of(rendering.entities(inconsistent(reference)));
             }
-            Set<OWLClass> classes = state.classesOf(individual, direct).orElseThrow();
-            return rendering.entities(classes.stream().filter(c -> !c.isOWLThing()));
+            // Over an upper ontology only some of its classes may be known: then the ordinary path answers.
+            return state.classesOf(individual, direct)
+                    .map(classes -> rendering.entities(classes.stream().filter(c -> !c.isOWLThing())));
         });
     }
 

@@ -116,6 +116,11 @@ final class AboxModules {
         return new Repartition(made, dropped, gone);
     }
 
+    /** The module an individual is in, or null when it is in none (not in the ontology). */
+    Module of(OWLIndividual individual) {
+        return moduleOf.get(individual);
+    }
+
     void markInconsistent(Module module) {
         module.consistent = false;
         inconsistent.add(module);

@@ -110,6 +110,17 @@ public final class ModularReasoner implements OWLReasoner {
     private boolean wholeBehind;
     private boolean wholeMissedRemoval;
 
+    // The schema's class hierarchy, classified once and kept while the schema stays the same.
+    private volatile Classifications.Job classification;
+    private volatile boolean hierarchyCovers;
+    private volatile boolean classifiedHere;
+    private volatile boolean stopWaiting;
+    // The classes realised with every change, and those clients asked about (RealisationScope).
+    private RealisationScope scope;
+    private final Set<OWLClass> asked = new HashSet<>();
+    // Over an upper ontology: every type of one module, found when asked.
+    private ModuleRealiser everyType;
+
     /** Whether ARMOR reasons on modules with this reasoner (a complete one, known by name). */
     public static boolean handles(String reasonerName) {
         return UNDERLYING.contains(reasonerName.toUpperCase(Locale.ROOT));
@@ -166,6 +177,26 @@ public final class ModularReasoner implements OWLReasoner {
     }
 
     /**
+     * The schema's kept class hierarchy (classified once per schema), or null before the first
+     * reasoning and when the schema is inconsistent. Safe to read from any thread.
+     */
+    public ClassifiedSchema classifiedSchema() {
+        Classifications.Job job = classification;
+        return job == null || !hierarchyCovers ? null : job.now();
+    }
+
+    /** Since when the schema's classification runs in the background (System.nanoTime), or -1 when it does not. */
+    public long classifyingSince() {
+        Classifications.Job job = classification;
+        return job != null && job.running() ? job.startedNanos : -1;
+    }
+
+    /** Whether the kept hierarchy was classified here, not taken from an earlier classification of the schema. */
+    public boolean classifiedHere() {
+        return classifiedHere;
+    }
+
+    /**
      * The types as of the last flush, for readers on other threads; null until the first
      * reasoning, and whenever the ontology is reasoned on as a whole.
      */
@@ -187,7 +218,10 @@ public final class ModularReasoner implements OWLReasoner {
         List<OWLOntologyChange> changes = List.copyOf(pending);
         pending.clear();
         switch (mode) {
-            case WHOLE -> whole.flush();
+            case WHOLE -> {
+                keepHierarchyUpToDate(changes);
+                whole.flush();
+            }
             case NOT_REASONED -> reasonOnModules();
             case MODULAR -> {
                 wholeBehind = true;
@@ -200,6 +234,8 @@ public final class ModularReasoner implements OWLReasoner {
     private void reasonOnModules() {
         pending.clear();
         closure = ontology.importsClosure().collect(Collectors.toSet());
+        scope = RealisationScope.of(ontology, asked);
+        classify();
         AboxLinks found = AboxLinks.of(linkShapingAxioms());
         if (found.obstacle().isPresent()) {
             reasonOnWhole(found.obstacle().get());
@@ -230,14 +266,18 @@ public final class ModularReasoner implements OWLReasoner {
             rules = ruleEngine;
             inconsistentWithConclusions.clear();
             links = found;
-            realiser = new ModuleRealiser(factory, configuration, schemaAxioms());
+            List<OWLAxiom> schema = schemaAxioms();
+            realiser = new ModuleRealiser(factory, configuration, schema,
+                    scope.everyClass() ? null : scope.tracked(), !scope.everyClass());
+            everyType = scope.everyClass() ? null : new ModuleRealiser(factory, configuration, schema, null, true);
             modules = new AboxModules(ontology, links);
             List<Module> all = modules.partitionAll();
             if (!nominalsIndependent()) {
                 return;
             }
-            schemaConsistent = realiser.schemaConsistent();
-            InferredState.Editor next = InferredState.empty().edit()
+            ClassifiedSchema kept = classification.now();
+            schemaConsistent = kept != null ? kept.consistent() : realiser.schemaConsistent();
+            InferredState.Editor next = InferredState.empty(scope).edit()
                     .classes(ontology.classesInSignature(Imports.INCLUDED).collect(Collectors.toSet()));
             record(all, schemaConsistent ? realiser.realise(all, modules::axiomsOf) : List.of(), next);
             baseState = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
@@ -276,6 +316,7 @@ public final class ModularReasoner implements OWLReasoner {
             OWLAxiom axiom = change.getAxiom();
             axiom.classesInSignature().forEach(classes::add);
             if (axiom.isOfType(AxiomType.ABoxAxiomTypes)) {
+                hierarchyCovers &= !ClassifiedSchema.escapes(classification.input, axiom);
                 AboxLinks.individualsOf(axiom).forEach(touched::add);
                 linksMayChange |= AboxLinks.shapesLinks(axiom);
                 // With rules: sameness can make the schema unfit for them, and a rule may read difference.
@@ -440,7 +481,9 @@ public final class ModularReasoner implements OWLReasoner {
             reasonOnWhole("individuals named in the schema (JFact answers them differently in modules)");
             return false;
         }
-        NominalIndependence found = NominalIndependence.check(ontology.getOWLOntologyManager(),
+        // A scratch manager: the extractor makes an ontology in it, which the reference's would keep (and refuse twice).
+        NominalIndependence found = NominalIndependence.check(
+                org.semanticweb.owlapi.apibinding.OWLManager.createOWLOntologyManager(),
                 logicalSchemaAxioms().toList(), modules.signatureOutsideHub());
         if (found.dependent().isPresent()) {
             reasonOnWhole("individuals named in the schema that the ABox can reach (" + found.dependent().get() + ")");
@@ -507,6 +550,86 @@ public final class ModularReasoner implements OWLReasoner {
         whole = factory.createReasoner(ontology, configuration);
         wholeBehind = false;
         wholeMissedRemoval = false;
+    }
+
+    /**
+     * The schema's class hierarchy: the one kept for this schema (classified earlier, or read from
+     * the checkpoint's sidecar), else classified by a reasoner of the underlying kind on the
+     * schema alone ({@link ClassifiedSchema}): at once for an ontology that stands alone, in the
+     * background over an upper ontology ({@link Classifications}), where class questions wait for it.
+     */
+    private void classify() {
+        ClassifiedSchema.Input input = ClassifiedSchema.inputOf(ontology, underlyingName);
+        Classifications.Job previous = classification;
+        if (previous == null || !previous.input.digest().equals(input.digest())) {
+            Classifications.Job job = Classifications.of(input, factory, configuration);
+            classifiedHere = job.running();
+            classification = job;
+            Classifications.release(previous);
+        }
+        hierarchyCovers = ClassifiedSchema.covers(input, ontology.axioms(Imports.INCLUDED)
+                .filter(axiom -> axiom.isOfType(AxiomType.ABoxAxiomTypes)));
+        if (scope.everyClass()) {
+            awaitClassification();
+        }
+    }
+
+    /** The classification, waited for while it runs (a time limit stops the wait, not the classification). */
+    private ClassifiedSchema awaitClassification() {
+        stopWaiting = false;
+        ClassifiedSchema done = classification.await(() -> stopWaiting);
+        if (done != null && classifiedHere) {
+            LOG.info("{}: {} classes classified with {} in {} ms", ontology.getOntologyID().getOntologyIRI()
+                    .map(Object::toString).orElse("(anonymous ontology)"), done.classCount(), underlyingName,
+                    done.classificationNanos() / 1_000_000);
+        }
+        return done;
+    }
+
+    /** On the whole ontology: a schema change classifies again, an assertion may leave the kept hierarchy. */
+    private void keepHierarchyUpToDate(List<OWLOntologyChange> changes) {
+        boolean schemaChanged = false;
+        for (OWLOntologyChange change : changes) {
+            if (change.isImportChange() || change.isAxiomChange() && change.getAxiom().isLogicalAxiom()
+                    && !change.getAxiom().isOfType(AxiomType.ABoxAxiomTypes)) {
+                schemaChanged = true;
+            } else if (change.isAxiomChange()) {
+                hierarchyCovers &= !ClassifiedSchema.escapes(classification.input, change.getAxiom());
+            }
+        }
+        if (schemaChanged) {
+            classify();
+        }
+    }
+
+    /**
+     * The kept hierarchy, when it is the whole ontology's: the schema is consistent, so is the
+     * ontology, and the ABox cannot add to the hierarchy ({@link ClassifiedSchema#covers}).
+     */
+    private ClassifiedSchema hierarchy() {
+        InferredState now = current();
+        ClassifiedSchema kept = hierarchyCovers ? awaitClassification() : null;
+        if (kept == null || !kept.consistent()) {
+            return null;
+        }
+        boolean consistent = now != null ? now.consistent() : whole().isConsistent();
+        return consistent ? kept : null;
+    }
+
+    /**
+     * Every type of the members of an individual's module, over an upper ontology where the
+     * modules are realised against some classes only: found now, kept until a change touches the module.
+     */
+    private TypeProfile everyTypeOf(OWLNamedIndividual individual, TypeProfile known) {
+        Module module = modules.of(individual);
+        if (module == null || everyType == null) {
+            return known;
+        }
+        everyType.prepare();
+        InferredState.Editor next = state.edit();
+        record(List.of(module), everyType.realise(List.of(module), modules::axiomsOf), next);
+        state = next.done();
+        return state.types(individual).orElseThrow(InconsistentOntologyException::new);
     }
 
     /** Schema axioms and ABox axioms that can make properties link (see {@link AboxLinks#shapesLinks}). */
@@ -596,11 +719,49 @@ public final class ModularReasoner implements OWLReasoner {
     @Override
     public NodeSet<OWLClass> getTypes(OWLNamedIndividual individual, boolean direct) {
         InferredState now = consistentState();
-        // Direct types need the whole ontology's class hierarchy: the hub's assertions can add to it.
-        if (now != null && now.knows(individual) && !(direct && !links.nominals().isEmpty())) {
-            return now.types(individual).orElseThrow(InconsistentOntologyException::new).nodeSet(direct);
+        if (now != null && now.knows(individual)) {
+            TypeProfile profile = now.types(individual).orElseThrow(InconsistentOntologyException::new);
+            if (!profile.complete()) {
+                profile = everyTypeOf(individual, profile);
+            }
+            // Direct types need the whole ontology's class hierarchy: the hub's assertions can add to it.
+            if (!direct || links.nominals().isEmpty()) {
+                return profile.nodeSet(direct);
+            }
+            // Over an upper ontology, a module outside the hub was realised on the schema part its
+            // assertions use, which the nominals cannot reach (NominalIndependence): its classes' order is the whole's.
+            Module module = modules.of(individual);
+            if (!scope.everyClass() && module != null && !module.hub) {
+                return profile.nodeSet(true);
+            }
+            ClassifiedSchema kept = hierarchy();
+            if (kept != null) {
+                return kept.mostSpecific(profile.nodeSet(false));
+            }
         }
         return whole().getTypes(individual, direct);
+    }
+
+    /**
+     * Realises the modules against all of {@code classes} at once, where they are not yet (over an
+     * upper ontology): for a caller about to ask the instances of many classes (SPARQL's inferred
+     * graph), which would otherwise realise the modules once per class.
+     */
+    public void realiseAgainst(java.util.Collection<OWLClass> classes) {
+        InferredState now = current();
+        if (now == null) {
+            return;
+        }
+        boolean more = false;
+        for (OWLClass owlClass : classes) {
+            if (!now.knows(owlClass) && now.inSignature(owlClass)) {
+                more |= asked.add(owlClass);
+            }
+        }
+        if (more) {
+            mode = Mode.NOT_REASONED;
+            current();
+        }
     }
 
     @Override
@@ -608,6 +769,15 @@ public final class ModularReasoner implements OWLReasoner {
         InferredState now = consistentState();
         if (now == null || expression.isAnonymous() || direct) {
             return whole().getInstances(expression, direct);
+        }
+        if (!now.knows(expression.asOWLClass()) && now.inSignature(expression.asOWLClass())) {
+            // A class not realised yet (over an upper ontology): from now on it is, with every change.
+            asked.add(expression.asOWLClass());
+            mode = Mode.NOT_REASONED;
+            now = consistentState();
+            if (now == null) {
+                return whole().getInstances(expression, false);
+            }
         }
         OWLNamedIndividualNodeSet instances = new OWLNamedIndividualNodeSet();
         for (OWLNamedIndividual individual : now.instances(expression.asOWLClass())) {
@@ -622,6 +792,11 @@ public final class ModularReasoner implements OWLReasoner {
         if (current != null) {
             current.interrupt();
         }
+        ModuleRealiser types = everyType;
+        if (types != null) {
+            types.interrupt();
+        }
+        stopWaiting = true;
         OWLReasoner wholeNow = whole;
         if (wholeNow != null) {
             wholeNow.interrupt();
@@ -631,7 +806,14 @@ public final class ModularReasoner implements OWLReasoner {
     @Override
     public void precomputeInferences(InferenceType... inferenceTypes) {
         if (current() == null) {
-            whole().precomputeInferences(inferenceTypes);
+            for (InferenceType type : inferenceTypes) {
+                // The kept hierarchy is the class hierarchy; over an upper ontology, types are found per question.
+                boolean kept = type == InferenceType.CLASS_HIERARCHY && hierarchy() != null
+                        || type == InferenceType.CLASS_ASSERTIONS && !scope.everyClass();
+                if (!kept) {
+                    whole().precomputeInferences(type);
+                }
+            }
         }
         // Class assertions are what the modules keep; anything else is computed when first asked.
     }
@@ -650,6 +832,7 @@ public final class ModularReasoner implements OWLReasoner {
     @Override
     public void dispose() {
         ontology.getOWLOntologyManager().removeOntologyChangeListener(listener);
+        Classifications.release(classification);
         if (whole != null) {
             whole.dispose();
         }
@@ -715,12 +898,14 @@ public final class ModularReasoner implements OWLReasoner {
 
     @Override
     public boolean isSatisfiable(OWLClassExpression classExpression) {
-        return whole().isSatisfiable(classExpression);
+        ClassifiedSchema kept = classExpression.isAnonymous() ? null : hierarchy();
+        return kept != null ? kept.isSatisfiable(classExpression.asOWLClass()) : whole().isSatisfiable(classExpression);
     }
 
     @Override
     public Node<OWLClass> getUnsatisfiableClasses() {
-        return whole().getUnsatisfiableClasses();
+        ClassifiedSchema kept = hierarchy();
+        return kept != null ? kept.bottomNode() : whole().getUnsatisfiableClasses();
     }
 
     @Override
@@ -740,27 +925,32 @@ public final class ModularReasoner implements OWLReasoner {
 
     @Override
     public Node<OWLClass> getTopClassNode() {
-        return whole().getTopClassNode();
+        ClassifiedSchema kept = hierarchy();
+        return kept != null ? kept.topNode() : whole().getTopClassNode();
     }
 
     @Override
     public Node<OWLClass> getBottomClassNode() {
-        return whole().getBottomClassNode();
+        ClassifiedSchema kept = hierarchy();
+        return kept != null ? kept.bottomNode() : whole().getBottomClassNode();
     }
 
     @Override
     public NodeSet<OWLClass> getSubClasses(OWLClassExpression ce, boolean direct) {
-        return whole().getSubClasses(ce, direct);
+        ClassifiedSchema kept = ce.isAnonymous() ? null : hierarchy();
+        return kept != null ? kept.subClasses(ce.asOWLClass(), direct) : whole().getSubClasses(ce, direct);
     }
 
     @Override
     public NodeSet<OWLClass> getSuperClasses(OWLClassExpression ce, boolean direct) {
-        return whole().getSuperClasses(ce, direct);
+        ClassifiedSchema kept = ce.isAnonymous() ? null : hierarchy();
+        return kept != null ? kept.superClasses(ce.asOWLClass(), direct) : whole().getSuperClasses(ce, direct);
     }
 
     @Override
     public Node<OWLClass> getEquivalentClasses(OWLClassExpression ce) {
-        return whole().getEquivalentClasses(ce);
+        ClassifiedSchema kept = ce.isAnonymous() ? null : hierarchy();
+        return kept != null ? kept.equivalentClasses(ce.asOWLClass()) : whole().getEquivalentClasses(ce);
     }
 
     @Override
