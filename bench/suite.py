@@ -8,8 +8,8 @@
 (tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set
 with the environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
 (query_latency.py, batch_throughput.py, reasoning_cycle.py, robot_speed.py,
-core_profile.py, lubm.py, default_clients.py, real_shapes.py, scenes.py). Section 10 (scenes)
-runs at full scale only; `python bench/scenes.py --smoke` is its small run
+core_profile.py, lubm.py, default_clients.py, real_shapes.py, scenes.py, explanations.py).
+Section 10 (scenes) runs at full scale only; `python bench/scenes.py --smoke` is its small run
 (tests/integration/test_bench_smoke.py).
 
 Every figure stands on checked answers (bench/answers.py): a benchmark stops at a wrong answer
@@ -33,6 +33,7 @@ from harness import REPO, SCALES, CoreSnapshot
 import batch_throughput
 import core_profile
 import default_clients
+import explanations
 import lubm
 import query_latency
 import real_shapes
@@ -142,6 +143,9 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
     if scale_name == 'full':
         stage('10. scenes by demonstration (issue 32)')
         results['scenes'] = scenes.measure(scratch, snapshot, scale_name)
+    stage('11. explanations: time to the first justification (issue 31)')
+    results['explanations'] = explanations.measure(scratch, snapshot,
+                                                   'full' if scale_name == 'full' else 'smoke')
     results['duration_s'] = time.monotonic() - started
     (scratch / 'results.json').write_text(json.dumps(results, indent=2, default=str))
     report_path.write_text(report.render(results) + '\n\n'
@@ -151,7 +155,9 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
                            + real_shapes.__doc__.split('\n\n', 2)[2].strip() + '\n\n'
                            + real_shapes.render(results['real_shapes']) + '\n'
                            + ('\n## 10. Scenes by demonstration (issue 32)\n\n'
-                              + scenes.render(results['scenes']) if 'scenes' in results else ''))
+                              + scenes.render(results['scenes']) if 'scenes' in results else '')
+                           + '\n## 11. Explanations: time to the first justification (issue 31)\n\n'
+                           + explanations.render(results['explanations']) + '\n')
     stage(f'report written to {report_path} (raw figures: {scratch / "results.json"})')
     return results
 
