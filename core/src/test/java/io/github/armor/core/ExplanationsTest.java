@@ -110,8 +110,10 @@ class ExplanationsTest {
         for (int i = 0; i < facts.size(); i += step) {
             OWLAxiom fact = facts.get(i);
             Response response = fixture.run("map", words(fact), arguments(fact, "2"));
-            if (reasoner.equals("ELK") && response.exitCode() == 227) {
-                continue; // ELK does not infer what needs more than OWL 2 EL: nothing to explain for it
+            if (reasoner.equals("ELK") && (response.exitCode() == 227 || response.exitCode() == 219)) {
+                // ELK infers nothing beyond OWL 2 EL (227: nothing to explain) and lists no
+                // property values at all (219, as QUERY OBJECTPROP IND answers on ELK)
+                continue;
             }
             assertTrue(response.success(), () -> fact + ": " + response.exitCode() + " " + response.errorDescription());
             checkJustifications(ontology, fact, response.queriedObjects());
@@ -141,7 +143,8 @@ class ExplanationsTest {
         assertEquals(List.of("1 asserted " + CoreFixture.iri("robot1") + " " + CoreFixture.iri("isIn") + " "
                 + CoreFixture.iri("kitchen")), asserted.queriedObjects());
         assertTrue(asserted.errorDescription().startsWith("asserted"), asserted.errorDescription());
-        CoreFixture.assertFails(fixture.run("map", "EXPLAIN IND CLASS", "kitchen", "OccupiedRoom"), 227);
+        // Nobody is in the bedroom (robot1 is in the kitchen, which makes that one occupied).
+        CoreFixture.assertFails(fixture.run("map", "EXPLAIN IND CLASS", "bedroom", "OccupiedRoom"), 227);
         CoreFixture.assertFails(fixture.run("map", "EXPLAIN CLASS CLASS", "Agent", "Robot"), 227);
         CoreFixture.assertFails(fixture.run("map", "EXPLAIN DATAPROP IND", "batteryLevel", "robot1", "INTEGER", "81"),
                 227);

@@ -27,7 +27,8 @@ import org.semanticweb.owlapi.model.parameters.Imports;
  *   justification needs.</li>
  * </ul>
  * Axioms are in Manchester syntax with short names, or full IRIs under {@code full_entity_iri}.
- * Within a justification, facts come first, then axioms, then rules, each sorted by text.
+ * Within a justification, facts come first, then axioms, then rules, each sorted by its text
+ * with short names.
  */
 final class JustificationLines {
     static final String ASSERTED = "asserted";
@@ -59,8 +60,9 @@ final class JustificationLines {
         for (int i = 0; i < sets.size(); i++) {
             String number = String.valueOf(i + 1);
             Set<OWLAxiom> justification = sets.get(i);
+            // By the short-name text: the same order whatever full_entity_iri is.
             justification.stream().sorted(Comparator.comparingInt(JustificationLines::order)
-                            .thenComparing(this::render))
+                            .thenComparing(axiom -> Syntax.render(reference, false, axiom)))
                     .forEach(axiom -> lines.add(number + " " + line(axiom, justification)));
         }
         return lines;

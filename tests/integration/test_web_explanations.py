@@ -1,0 +1,52 @@
+# Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+"""The web view's "why?" (issue 31) in a real browser: inferred facts show their justification."""
+
+from playwright.sync_api import expect
+# The web view's own fixtures (a node with its web port, a browser, a page) and helpers.
+from test_web_view import browser, page, web_node  # noqa: F401
+from test_web_view import load, open_reference
+
+LABEL = '<http://www.w3.org/2000/01/rdf-schema#label>'
+NS = 'http://www.example.org/robotics#'
+
+
+def test_an_inferred_type_and_value_say_why_with_linked_names_and_a_sentence(web_node, page):
+    load(web_node, 'web_why', reasoner='HERMIT')
+    from test_web_view import call
+    answer = call(web_node, 'web_why', 'ADD AXIOM',
+                  f'AnnotationAssertion({LABEL} <{NS}robot1> "the robot")')
+    assert answer.success, answer.error_description
+    open_reference(page, web_node, 'web_why', 'individuals')
+    page.locator('tr[data-name="robot1"] td').first.click()
+    detail = page.locator('#individual-detail')
+    # Only inferred facts have a "why?": RobotInRoom and Agent, not the asserted Robot.
+    expect(detail.locator('button.why')).to_have_count(2)
+    detail.locator('a.inferred', has_text='RobotInRoom').locator('xpath=..').locator('button.why').click()
+    box = detail.locator('.why-box')
+    expect(box).to_contain_text('justification 1')
+    expect(box.locator('li.axiom.asserted')).to_have_count(3)
+    expect(box.locator('li.axiom')).to_contain_text(['kitchen Type Room', 'robot1 Type Robot',
+                                                      'robot1 isIn kitchen',
+                                                      'RobotInRoom EquivalentTo Robot and (isIn some Room)'])
+    expect(box.locator('.why-sentence')).to_have_text(
+        'the robot is a RobotInRoom because kitchen is a Room, the robot is a Robot, the robot isIn'
+        ' kitchen and a RobotInRoom is exactly a Robot and (isIn some Room).')
+    # A name in an axiom links to its page.
+    box.locator('a.entity', has_text='kitchen').first.click()
+    expect(page.locator('#individual-detail h3')).to_have_text('kitchen')
+    # kitchen contains robot1 (the inverse of isIn): an inferred value, explained the same way.
+    contains = page.locator('#individual-detail').locator('a.inferred', has_text='robot1')
+    contains.locator('xpath=..').locator('button.why').click()
+    expect(page.locator('#individual-detail .why-box li.axiom')).to_contain_text(
+        ['robot1 isIn kitchen', 'contains InverseOf isIn'])
+
+
+def test_an_inferred_link_of_the_class_tree_says_why(web_node, page):
+    load(web_node, 'web_why_tree', reasoner='HERMIT')
+    open_reference(page, web_node, 'web_why_tree', 'classes')
+    tree = page.locator('#class-tree')
+    # RobotInRoom is inferred under Robot (its definition); the asserted links have no "why?".
+    link = tree.locator('span.class-name', has=page.locator('span.inferred[data-iri$="#RobotInRoom"]')).first
+    link.locator('button.why').click()
+    expect(tree.locator('.why-box li.axiom')).to_contain_text(
+        ['RobotInRoom EquivalentTo Robot and (isIn some Room)'])
