@@ -107,7 +107,7 @@ class Explanations:
         def labels(response: Any) -> Dict[str, str]:
             found: Dict[str, str] = {}
             for row in self.answers.rows(response):
-                name = short_name(str(row['e']))
-                found.setdefault(name, str(row['l']))
+                if row.get('e') is not None and row.get('l') is not None:
+                    found.setdefault(short_name(str(row['e'])), str(row['l']))
             return found
         return self._execute(('QUERY', 'SPARQL', 'FORMATTED'), [query], labels)

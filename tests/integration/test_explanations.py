@@ -40,19 +40,23 @@ def test_several_justifications_of_a_property_value(ref):
     why = ref.explain_object_property('contains', 'corridor1', 'alice', justifications=3)
     assert [[a.text for a in j] for j in why] == [['alice isIn corridor1',
                                                   'contains InverseOf isIn']]
-    agent = ref.explain_instance('robot1', 'Agent', justifications=3)
-    assert len(agent) == 2  # as a Robot, and as what isIn's domain says
+    # robot1 is an Agent as a Robot, as what isIn's domain says, and as what has a batteryLevel.
+    agent = ref.explain_instance('robot1', 'Agent', justifications=5)
     assert {tuple(a.text for a in j) for j in agent} == {
         ('robot1 Type Robot', 'Robot SubClassOf Agent'),
-        ('robot1 isIn kitchen', 'isIn Domain Agent')}
+        ('robot1 isIn kitchen', 'isIn Domain Agent'),
+        ('robot1 batteryLevel 80', 'Robot SubClassOf Agent', 'batteryLevel Domain Robot')}
+    assert [len(j) for j in agent] == [2, 2, 3]  # smallest first
 
 
 def test_asserted_facts_subclasses_and_what_does_not_hold(ref):
     value = ref.explain_data_property('batteryLevel', 'robot1', 80)
     assert value.asserted and [[a.kind for a in j] for j in value] == [['asserted']]
-    sub = ref.explain_subclass('RobotInRoom', 'Agent')
-    assert [[a.text for a in j] for j in sub] == [[
-        'Robot SubClassOf Agent', 'RobotInRoom EquivalentTo Robot and (isIn some Room)']]
+    sub = ref.explain_subclass('RobotInRoom', 'Agent', justifications=2)
+    assert {tuple(a.text for a in j) for j in sub} == {
+        ('Robot SubClassOf Agent', 'RobotInRoom EquivalentTo Robot and (isIn some Room)'),
+        ('RobotInRoom EquivalentTo Robot and (isIn some Room)', 'isIn Domain Agent')}
+    assert all(a.kind == 'axiom' for j in sub for a in j)
     with pytest.raises(ArmorNotEntailedError) as refused:
         ref.explain_instance('bedroom', 'OccupiedRoom')
     assert refused.value.exit_code == 227 and 'does not hold' in refused.value.msg
