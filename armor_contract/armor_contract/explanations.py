@@ -124,6 +124,8 @@ _SENTENCES: List[Tuple[re.Pattern, str]] = [
     (re.compile(r'^(\S+) SameAs (\S+)$'), '{0} is the same as {1}'),
     (re.compile(r'^(\S+) DifferentFrom (\S+)$'), '{0} is not {1}'),
     (re.compile(r'^(\S+) Characteristics: (\S+)$'), '{0} is {lower1}'),
+    (re.compile(r'^(Functional|InverseFunctional|Symmetric|Asymmetric|Transitive|Reflexive|'
+                r'Irreflexive): (\S+)$'), '{1} is {lower0}'),
     (re.compile(r'^(\S+) (\S+) (\S+)$'), '{0} {1} {2}'),
 ]
 
@@ -145,7 +147,7 @@ def _say_axiom(axiom: ExplainedAxiom, say: Callable[[str], str]) -> str:
             words.update({f'A{i}': _article(p) for i, p in enumerate(parts)})
             words['A0'] = 'every ' + parts[0] if template.startswith('{A0} is {a1}') else \
                 _article(parts[0])
-            words['lower1'] = parts[1].lower() if len(parts) > 1 else ''
+            words.update({f'lower{i}': p.lower() for i, p in enumerate(parts)})
             return template.format(*parts, **words)
     return say(axiom.text)
 
