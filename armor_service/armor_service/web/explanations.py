@@ -79,15 +79,16 @@ class ExplanationRoutes:
         query = ('SELECT ?e ?l WHERE { VALUES ?e { ' + entities + ' } ?e rdfs:label ?l } '
                  'ORDER BY ?e ?l')
         answer = await self._directive(reference, 'QUERY', 'SPARQL', 'FORMATTED', query)
-        labels: Dict[str, str] = {}
-        row: Dict[str, str] = {}
+        rows: List[Dict[str, str]] = [{}]
         for item in answer.get('sparql_queried_objects', []) if answer['success'] else []:
-            if not item['key']:
-                if 'e' in row and 'l' in row:
-                    name = row['e'].strip('<>').rsplit('#', 1)[-1].rsplit('/', 1)[-1]
-                    labels.setdefault(name, row['l'].split('"')[1] if row['l'].startswith('"')
-                                      else row['l'])
-                row = {}
-            else:
-                row[item['key']] = item['value']
+            if item['key']:
+                rows[-1][item['key']] = item['value']
+            else:  # an item with an empty key ends a row (the last row may end without one)
+                rows.append({})
+        labels: Dict[str, str] = {}
+        for row in rows:
+            if 'e' in row and 'l' in row:
+                name = row['e'].strip('<>').rsplit('#', 1)[-1].rsplit('/', 1)[-1]
+                text = row['l']
+                labels.setdefault(name, text.split('"')[1] if text.startswith('"') else text)
         return labels

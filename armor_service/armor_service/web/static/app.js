@@ -141,14 +141,17 @@ function whyButton(kind, args) {
     title: 'why does the reasoner infer this? (its justifications)', text: 'why?'});
 }
 
-/** An axiom's text with each <IRI> a link to its page: a class of the hierarchy, else an individual. */
+/**
+ * An axiom's text with each <IRI> a link to its page: a class when the hierarchy has it or its
+ * name starts with a capital (the OWL convention, for a tree not loaded yet), else an individual.
+ */
 function axiomNodes(text) {
   const nodes = [];
   let last = 0;
   for (const match of text.matchAll(/<([^<>\s]+)>/g)) {
     nodes.push(text.slice(last, match.index));
     const iri = match[1];
-    const kind = classByIri.has(iri) || state.classIndex?.has(shortName(iri)) ? 'class' : 'individual';
+    const kind = classByIri.has(iri) || /^[A-Z]/.test(shortName(iri)) ? 'class' : 'individual';
     nodes.push(el('a', {className: 'entity', 'data-kind': kind, 'data-iri': iri, href: '#', title: iri,
       text: shortName(iri)}));
     last = match.index + match[0].length;
