@@ -7,9 +7,10 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.Deque;
-import java.util.HashSet;
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.stream.Collectors;
@@ -47,8 +48,9 @@ import uk.ac.manchester.cs.owlapi.modularity.SyntacticLocalityModuleExtractor;
  * set tree for more than one), searched first on a small part of the ontology:
  * <ul>
  *   <li>for a fact about individuals, the schema plus the assertions of the individuals the
- *   fact names and of those linked to them (by property assertions, sameAs, differentFrom),
- *   cut down to the syntactic locality (STAR) module of the fact's signature;</li>
+ *   fact names, then also of their neighbours (linked by property assertions, sameAs,
+ *   differentFrom), then up to 3 links away, then the whole connected part, each cut down to the
+ *   syntactic locality (STAR) module of the fact's signature, until one yields a justification;</li>
  *   <li>for a subsumption, the STAR module of the two classes.</li>
  * </ul>
  * A justification is a subset of the axioms searched that the reasoner finds entailing the fact
@@ -65,6 +67,9 @@ final class Justifications {
     // ELK answers only OWL 2 EL entailments and silently drops the rest: the checks that make a
     // justification minimal need a complete reasoner, so an ELK reference is explained by HermiT.
     private static final String FALLBACK_REASONER = "HERMIT";
+    private static final int UNBOUNDED = Integer.MAX_VALUE;
+    // Links from the fact's individuals whose assertions are searched, in turn.
+    private static final int[] RADII = {1, 2, 4, UNBOUNDED};
 
     private Justifications() {}
 
@@ -82,9 +87,22 @@ final class Justifications {
         String reasoner = explainingReasoner(reasonerName);
         OWLReasonerFactory factory = ReasonerRegistry.factory(reasoner);
         Set<OWLAxiom> all = logicalAxioms(ontology);
-        Set<OWLAxiom> module = module(ontology, fact, individuals, all);
-        Found found = search(fact, module, limit, factory, deadlineNanos, all.size(), reasoner, false);
-        if (found.sets().isEmpty() && !found.partial() && module.size() < all.size()) {
+        // Near the fact first: most facts follow from the assertions of their individuals and of
+        // their neighbours; a robot's map is one connected ABox, whose module is nearly all of it.
+        Found found = null;
+        int searched = -1;
+        for (int radius : individuals.isEmpty() ? new int[] {UNBOUNDED} : RADII) {
+            Set<OWLAxiom> module = module(ontology, fact, individuals, all, radius);
+            if (module.size() == searched) {
+                continue; // the part did not grow: nothing new to search
+            }
+            searched = module.size();
+            found = search(fact, module, limit, factory, deadlineNanos, all.size(), reasoner, false);
+            if (!found.sets().isEmpty() || found.partial()) {
+                return found;
+            }
+        }
+        if (searched < all.size()) {
             found = search(fact, all, limit, factory, deadlineNanos, all.size(), reasoner, false);
         }
         return found;
@@ -111,14 +129,14 @@ final class Justifications {
      * individuals' connected part of the ABox, then the STAR module of the fact's signature in it.
      */
     static Set<OWLAxiom> module(OWLOntology ontology, OWLAxiom fact, Set<OWLNamedIndividual> individuals,
-                                Set<OWLAxiom> all) {
+                                Set<OWLAxiom> all, int radius) {
         Set<OWLAxiom> candidates = new LinkedHashSet<>();
         for (OWLAxiom axiom : all) {
             if (!axiom.isOfType(AxiomType.ABoxAxiomTypes)) {
                 candidates.add(axiom);
             }
         }
-        candidates.addAll(connectedAssertions(ontology, individuals));
+        candidates.addAll(connectedAssertions(ontology, individuals, radius));
         Set<OWLEntity> signature = fact.signature().collect(Collectors.toSet());
         SyntacticLocalityModuleExtractor extractor = new SyntacticLocalityModuleExtractor(
                 OWLManager.createOWLOntologyManager(), candidates.stream(), ModuleType.STAR);
@@ -126,13 +144,22 @@ final class Justifications {
                 .collect(Collectors.toCollection(LinkedHashSet::new));
     }
 
-    /** The assertions about the individuals reachable from {@code start} through assertions linking individuals. */
-    private static Set<OWLAxiom> connectedAssertions(OWLOntology ontology, Set<OWLNamedIndividual> start) {
+    /**
+     * The assertions about the individuals at most {@code radius - 1} links from {@code start}
+     * (links: assertions between individuals), so {@code radius} links reach their neighbours.
+     */
+    private static Set<OWLAxiom> connectedAssertions(OWLOntology ontology, Set<OWLNamedIndividual> start,
+                                                     int radius) {
         Set<OWLAxiom> assertions = new LinkedHashSet<>();
-        Set<OWLIndividual> seen = new HashSet<>(start);
+        Map<OWLIndividual, Integer> distance = new HashMap<>();
+        start.forEach(i -> distance.put(i, 0));
         Deque<OWLIndividual> queue = new ArrayDeque<>(start);
         while (!queue.isEmpty()) {
             OWLIndividual individual = queue.poll();
+            int next = distance.get(individual) + 1;
+            if (next > radius) {
+                continue;
+            }
             ontology.referencingAxioms((OWLPrimitive) individual, Imports.INCLUDED)
                     .filter(a -> a.isOfType(AxiomType.ABoxAxiomTypes))
                     .forEach(axiom -> {
@@ -141,7 +168,8 @@ final class Justifications {
                         }
                         if (axiom instanceof OWLIndividualAxiom || axiom.isOfType(AxiomType.OBJECT_PROPERTY_ASSERTION,
                                 AxiomType.NEGATIVE_OBJECT_PROPERTY_ASSERTION)) {
-                            axiom.individualsInSignature().filter(seen::add).forEach(queue::add);
+                            axiom.individualsInSignature().filter(i -> distance.putIfAbsent(i, next) == null)
+                                    .forEach(queue::add);
                         }
                     });
         }
