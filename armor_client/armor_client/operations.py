@@ -20,6 +20,7 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 from armor_client.errors import error_for
 from armor_client.planning import PlannerBridge
 from armor_client.scenes import Scenes
+from armor_client.explanations import Explanations
 from armor_contract import catalogue
 from armor_client.values import answer_value, entity_iri, short_name, typed_argument, Value
 
@@ -1256,7 +1257,7 @@ class SessionCommands:
         return self._session('', ('LOG', 'FILE', 'ON'), [path], Answers.nothing)
 
 
-class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge, Scenes):
+class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge, Scenes, Explanations):
     """What Reference and AsyncReference share: the state, sending, and reading an answer.
 
     Each directive goes through the session's ``call``, and its answer through the session's
