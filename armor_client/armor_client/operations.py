@@ -1208,6 +1208,27 @@ class SessionCommands:
                              lambda response: int(response.queried_objects[0])
                              if response.queried_objects else 0)
 
+    def digest(self, reference: str) -> str:
+        """A SHA-256 of a reference's asserted axioms, annotations and imports (GET REF DIGEST).
+
+        Equal digests mean equal ontologies: compare one before and after an answer was lost,
+        or between two copies of a reference.
+        """
+        return self._session('', ('GET', 'REF', 'DIGEST'), [reference],
+                             lambda response: response.queried_objects[0]
+                             if response.queried_objects else '')
+
+    def state_damage(self) -> List[Dict[str, Any]]:
+        """What the state directory could not restore or cannot keep now (GET STATE DAMAGE).
+
+        Returns:
+            One dict per damaged reference (``reference``, ``restored``, ``revision``,
+            ``problems``, ``kept_in``, as docs/durability.md describes); empty when nothing.
+        """
+        return self._session('', ('GET', 'STATE', 'DAMAGE'), [],
+                             lambda response: [json.loads(item)
+                                               for item in response.queried_objects])
+
     def changes_since(self, reference: str, revision: int = -1,
                       client: Optional[str] = None) -> ChangeHistory:
         """A reference's acknowledged changes after a revision, oldest first (GET REF CHANGES).
@@ -1257,7 +1278,8 @@ class SessionCommands:
         return self._session('', ('LOG', 'FILE', 'ON'), [path], Answers.nothing)
 
 
-class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge, Scenes, Explanations):
+class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge, Scenes,
+                    Explanations):
     """What Reference and AsyncReference share: the state, sending, and reading an answer.
 
     Each directive goes through the session's ``call``, and its answer through the session's

@@ -70,7 +70,8 @@ def test_the_cli_prints_an_indented_list():
         'bedroom Type OccupiedRoom',
         '  justification 1:',
         '    [asserted] robot1 isIn bedroom',
-        '    [rule] occupied: Robot(?r), isIn(?r, ?l) -> OccupiedRoom(?l)  (?l=bedroom, ?r=robot1)',
+        '    [rule] occupied: Robot(?r), isIn(?r, ?l) -> OccupiedRoom(?l)'
+        '  (?l=bedroom, ?r=robot1)',
     ]
 
 
@@ -78,5 +79,6 @@ def test_read_aloud_says_a_property_characteristic():
     explanation = parse([f'1 asserted <{NS}kitchen> <{NS}connectedTo> <{NS}corridor1>',
                          f'1 axiom Symmetric: <{NS}connectedTo>'],
                         'corridor1 connectedTo kitchen', False, iris=False)
-    assert explanation.read_aloud() == ('corridor1 connectedTo kitchen because kitchen connectedTo '
-                                        'corridor1 and connectedTo is symmetric.')
+    assert explanation.read_aloud() == (
+        'corridor1 connectedTo kitchen because kitchen connectedTo corridor1 and connectedTo is '
+        'symmetric.')

@@ -1,5 +1,7 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-"""Reading the EXPLAIN commands' answers (docs/explanations.md): what the clients and the web view share.
+"""Reading the EXPLAIN commands' answers (docs/explanations.md).
+
+What the clients and the web view share.
 
 An answer holds one line per axiom, ``<n> <kind> <axiom>``: ``n`` numbers the justification
 (the lines of one justification share it), ``kind`` is ``asserted``, ``axiom`` or ``rule``. A
@@ -49,7 +51,7 @@ class ExplainedAxiom:
 
 
 class Explanation(list):
-    """The justifications of a fact: a list of lists of ExplainedAxiom (one list per justification).
+    """The justifications of a fact: a list of lists of ExplainedAxiom, one per justification.
 
     Attributes:
         fact: the fact explained, in Manchester syntax (``bedroom Type OccupiedRoom``).
@@ -154,7 +156,7 @@ def _say_axiom(axiom: ExplainedAxiom, say: Callable[[str], str]) -> str:
 
 def read_aloud(fact: str, justifications: List[List[ExplainedAxiom]],
                labels: Mapping[str, str]) -> str:
-    """The sentence of ``Explanation.read_aloud``: the fact, then 'because' and each justification."""
+    """The sentence of ``Explanation.read_aloud``: the fact, 'because', each justification."""
     def say(text: str) -> str:
         return _NAME.sub(lambda m: labels.get(m.group(0), m.group(0)), text)
 

@@ -41,8 +41,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('-n', '--justifications', type=int, default=1,
                         help='how many justifications at most (1 to 20, default 1)')
     parser.add_argument('--type', default='',
-                        help='dataprop: the value\'s type (INTEGER, LONG, DOUBLE, BOOLEAN, STRING...; '
-                             'default: read from the value)')
+                        help='dataprop: the value\'s type '
+                        '(INTEGER, LONG, DOUBLE, BOOLEAN, STRING...; '
+                        'default: read from the value)')
     parser.add_argument('--aloud', action='store_true',
                         help='also print the explanation as a sentence, with rdfs:labels')
     parser.add_argument('--json', action='store_true', help='print the justifications as JSON')
@@ -81,7 +82,8 @@ def render(explanation: Explanation, partial: bool = False) -> List[str]:
         for axiom in justification:
             rule = f'{axiom.rule}: ' if axiom.kind == 'rule' else ''
             bindings = ', '.join(f'{v}={x}' for v, x in sorted(axiom.bindings.items()))
-            lines.append(f'    [{axiom.kind}] {rule}{axiom.text}' + (f'  ({bindings})' if bindings else ''))
+            fired = f'  ({bindings})' if bindings else ''
+            lines.append(f'    [{axiom.kind}] {rule}{axiom.text}{fired}')
     if partial:
         lines.append('  (partial: the reasoner time limit ran out before all were found)')
     return lines

@@ -23,7 +23,8 @@ from armor_contract.explanations import parse
 _KINDS = {'instance': (('EXPLAIN', 'IND', 'CLASS'), 2),
           'objectprop': (('EXPLAIN', 'OBJECTPROP', 'IND'), 3),
           'subclass': (('EXPLAIN', 'CLASS', 'CLASS'), 2)}
-_FACTS = {'instance': '{0} Type {1}', 'objectprop': '{1} {0} {2}', 'subclass': '{0} SubClassOf {1}'}
+_FACTS = {'instance': '{0} Type {1}', 'objectprop': '{1} {0} {2}',
+          'subclass': '{0} SubClassOf {1}'}
 
 _IRI = re.compile(r'<([^<>\s]+)>')
 

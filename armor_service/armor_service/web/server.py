@@ -223,7 +223,8 @@ class _Routes:
         app.router.add_post(prefix + '/sparql', self.sparql)
         SceneRoutes(self._json_lines).add_to(app, prefix)
         ExplanationRoutes(self._reads.directive, lambda key, fetch, reference: self._shared(
-            key, self._live.version(reference), REFERENCE_MAX_AGE_S, fetch, reference)).add_to(app, prefix)
+            key, self._live.version(reference), REFERENCE_MAX_AGE_S, fetch, reference)
+        ).add_to(app, prefix)
 
     async def index(self, request: web.Request) -> web.StreamResponse:
         return web.FileResponse(STATIC / 'index.html')
