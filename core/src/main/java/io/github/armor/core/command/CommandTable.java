@@ -155,6 +155,8 @@ public final class CommandTable {
         private boolean variadic;
         private boolean emptySurplusIgnored;
         private String summary = "";
+        private final List<AnswerSource> whileBusy = new ArrayList<>();
+        private String subscribedAs = "";
 
         private Builder(String key) {
             this.key = key;
@@ -194,6 +196,21 @@ public final class CommandTable {
         /** What the command does, in one line (the catalogue, the CLI and the docs show it). */
         public Builder summary(String text) {
             summary = text;
+            return this;
+        }
+
+        /**
+         * A way to answer it while another directive holds the reference (from the state its
+         * reasoner last published), tried before waiting; sources are asked in the order given.
+         */
+        public Builder whileBusy(AnswerSource source) {
+            whileBusy.add(source);
+            return this;
+        }
+
+        /** A subscription to it asks the command written {@code words} instead (same arguments). */
+        public Builder subscribedAs(String words) {
+            subscribedAs = normalise(words);
             return this;
         }
 
@@ -239,7 +256,9 @@ public final class CommandTable {
             boolean plugin = !origin.equals(BUILT_IN);
             CommandSpec spec = new CommandSpec(key, aliases, kind, required, optional, variadic,
                     emptySurplusIgnored, summary, origin,
-                    plugin ? PluginGuard.guard(key, origin, handler) : handler);
+                    plugin ? PluginGuard.guard(key, origin, handler) : handler,
+                    plugin ? whileBusy.stream().map(source -> PluginGuard.guard(key, origin, source)).toList()
+                            : whileBusy, subscribedAs);
             List<String> keys = new ArrayList<>(aliases);
             keys.add(0, key);
             for (String name : keys) {

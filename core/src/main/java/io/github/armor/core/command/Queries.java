@@ -31,24 +31,28 @@ public final class Queries implements CommandGroup {
         registerPropertyQueries(table);
         table.command("QUERY SPARQL").args("query").variadic()
                 .summary("SPARQL SELECT or ASK, one string per row").query(c -> Sparql.answer(c, false));
-        table.command("QUERY SPARQL FORMATTED").args("query").variadic()
+        table.command("QUERY SPARQL FORMATTED").args("query").variadic().subscribedAs("QUERY SPARQL")
                 .summary("SPARQL SELECT or ASK, rows as variable/value pairs").query(c -> Sparql.answer(c, true));
         table.command("QUERY CONSISTENCY").summary("is it consistent, and if not, why").query(Explanations::answer);
     }
 
     private static void registerIndividualQueries(CommandTable table) {
         table.command("QUERY IND").args("ind").emptySurplusIgnored()
-                .summary("the classes of the individual").query(c -> c.ok(c.render().entities(types(c.reference(),
-                c.individual(0), false).stream())));
+                .summary("the classes of the individual").whileBusy(c -> StateQueries.classesOf(c, false))
+                .query(c -> c.ok(c.render().entities(types(c.reference(), c.individual(0), false).stream())));
         table.command("QUERY IND CLASS").args("class").emptySurplusIgnored()
-                .summary("the instances of the class").query(c -> c.ok(c.render().entities(
+                .summary("the instances of the class").whileBusy(StateQueries::instances)
+                .query(c -> c.ok(c.render().entities(
                 Inferences.instances(c.reference(), c.owlClass(0), false).stream())));
         table.command("QUERY IND DL").args("class expression")
                 .summary("the instances of a Manchester class expression").query(c -> c.ok(c.render().entities(
                 Inferences.instances(c.reference(), c.classExpression(0), false)
                         .stream())));
         table.command("QUERY CLASS IND").args("ind").optional("most specific only").emptySurplusIgnored()
-                .summary("the classes of the individual, optionally the most specific only").query(c -> {
+                .summary("the classes of the individual, optionally the most specific only")
+                .whileBusy(c -> StateQueries.classesOf(c, c.args().size() > 1
+                        && c.arg(1).trim().equalsIgnoreCase("true")))
+                .query(c -> {
             boolean direct = c.hasArg(1) && c.flag(1);
             return c.ok(c.render().entities(types(c.reference(), c.individual(0), direct).stream()));
         });

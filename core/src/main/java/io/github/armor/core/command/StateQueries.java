@@ -2,7 +2,6 @@
 package io.github.armor.core.command;
 
 import io.github.armor.core.api.ArmorException;
-import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.reasoning.InferredState;
@@ -23,34 +22,46 @@ import org.semanticweb.owlapi.model.OWLNamedIndividual;
  * ontology, which the writer is changing. The answer is the one the locked path gave when that
  * state was published; its description names the state's revision, so a client knows how old it
  * is. Anything this cannot answer exactly (an unknown name, another command, no published state)
- * is left to the ordinary path, which waits for the reference.
+ * is left to the ordinary path, which waits for the reference. Each is an {@link AnswerSource}
+ * registered beside its command's handler (see {@link Queries}).
  */
-public final class StateQueries {
+final class StateQueries {
     private StateQueries() {}
 
+    /** The instances of the class argument (QUERY IND CLASS), from the published state. */
+    static Optional<Response> instances(CommandContext context) {
+        return fromPublished(context, (reference, state, known) -> named(reference, EntityType.CLASS,
+                context.arg(0), known).map(owlClass -> context.render().entities(state.consistent()
+                ? state.instances(owlClass).stream() : inconsistent(reference))));
+    }
+
+    /** The classes of the individual argument, all or the most specific only, from the published state. */
+    static Optional<Response> classesOf(CommandContext context, boolean direct) {
+        return fromPublished(context, (reference, state, known) -> types(reference, state, context.arg(0), direct,
+                known, context.render()));
+    }
+
+    /** What a published state answers: the list it gives, or empty when it cannot answer exactly. */
+    @FunctionalInterface
+    private interface StateAnswer {
+        Optional<List<String>> objects(Reference reference, InferredState state, Predicate<OWLEntity> known);
+    }
+
     /** The answer from the published state, or empty when the directive must wait for the reference. */
-    public static Optional<Response> answer(Directive directive, Reference reference, Rendering rendering) {
+    private static Optional<Response> fromPublished(CommandContext context, StateAnswer answer) {
+        Reference reference = context.reference();
         Optional<Published> published = reference.publishedState();
         // A client reads its own writes: a state older than its last change is no answer for it.
-        if (published.isEmpty()
-                || published.get().revision() < reference.changeHistory().lastRevisionOf(directive.clientName())) {
+        if (published.isEmpty() || published.get().revision()
+                < reference.changeHistory().lastRevisionOf(context.directive().clientName())) {
             return Optional.empty();
         }
         InferredState state = published.get().state();
         Predicate<OWLEntity> known = entity -> entity instanceof OWLClass owlClass ? state.knows(owlClass)
                 : entity instanceof OWLNamedIndividual individual && state.knows(individual);
         try {
-            Optional<List<String>> objects = switch (directive.key()) {
-                case "QUERY IND CLASS" -> named(reference, EntityType.CLASS, directive.args().get(0), known)
-                        .map(owlClass -> rendering.entities(state.consistent()
-                                ? state.instances(owlClass).stream() : inconsistent(reference)));
-                case "QUERY IND -" -> types(reference, state, directive.args().get(0), false, known, rendering);
-                case "QUERY CLASS IND" -> types(reference, state, directive.args().get(0), directive.args().size() > 1
-                        && directive.args().get(1).trim().equalsIgnoreCase("true"), known, rendering);
-                default -> Optional.empty();
-            };
-            return objects.map(list -> Response.ok(state.consistent(), list).withDescription(note(published.get(),
-                    reference)));
+            return answer.objects(reference, state, known).map(list -> Response.ok(state.consistent(), list)
+                    .withDescription(note(published.get(), reference)));
         } catch (ArmorException e) {
             if (e.exitCode() != ExitCode.INCONSISTENT) {
                 return Optional.empty();
