@@ -42,7 +42,9 @@ final class PluginGuard {
 
     /** The handler a plugin registered, run under the guard. */
     static Handler guard(String key, String origin, Handler handler) {
-        return context -> run(key, origin, handler, handler.getClass().getClassLoader(), context);
+        ClassLoader loader = handler instanceof PluginTable.Adapted adapted ? adapted.loader()
+                : handler.getClass().getClassLoader();
+        return context -> run(key, origin, handler, loader, context);
     }
 
     /** An answer source a plugin registered, run under the guard (no answer: null inside it). */
