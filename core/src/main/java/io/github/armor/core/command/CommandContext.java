@@ -25,6 +25,7 @@ import org.semanticweb.owlapi.model.OWLOntologyChange;
 /** What a command handler sees: the directive, its reference (if any), the registry and the settings. */
 public final class CommandContext {
     private final Directive directive;
+    private final CommandKind kind;
     private final Reference reference;
     private final ReferenceRegistry references;
     private final CoreConfig config;
@@ -36,10 +37,11 @@ public final class CommandContext {
     private Supplier<Response> afterRelease;
     private final List<String> unknownNames = new ArrayList<>();
 
-    public CommandContext(Directive directive, Reference reference, ReferenceRegistry references,
+    public CommandContext(Directive directive, CommandKind kind, Reference reference, ReferenceRegistry references,
                           CoreConfig config, Rendering rendering, DirectiveLog log, boolean replaying,
                           CommandTable commands, Supplier<List<String>> stateDamage) {
         this.directive = directive;
+        this.kind = kind;
         this.reference = reference;
         this.references = references;
         this.config = config;
@@ -92,7 +94,7 @@ public final class CommandContext {
             response = withNote(response, "new to the reference: " + String.join(", ", unknownNames));
         }
         String unused = reference == null ? "" : reference.coverage().summary();
-        if (!unused.isEmpty() && directive.command().equalsIgnoreCase("QUERY")) {
+        if (!unused.isEmpty() && kind == CommandKind.QUERY) {
             response = withNote(response, "may be incomplete: " + unused);
         }
         return response;
@@ -179,7 +181,7 @@ public final class CommandContext {
     private void noteIfUnknown(OWLEntity entity, String written) {
         if (!reference.names().knows(entity)) {
             String unknown = reference.names().describeUnknown(entity.getEntityType(), written);
-            if (config.safeguards().strictNames() && directive.command().equalsIgnoreCase("QUERY")) {
+            if (config.safeguards().strictNames() && kind == CommandKind.QUERY) {
                 throw new ArmorException(ExitCode.UNKNOWN_NAME, "reference '" + reference.name()
                         + "' does not know the " + unknown + " (strict_names is on)");
             }

@@ -158,7 +158,7 @@ public final class Pipeline {
         stages.admission().heard(directive);
         CommandSpec spec = stages.dispatcher().resolve(directive);
         return switch (spec.target()) {
-            case NONE -> spec.handler().run(context(directive, null));
+            case NONE -> spec.handler().run(context(spec, directive, null));
             case NEW -> create(spec, directive, unit);
             case EXISTING -> onReference(spec, directive, unit);
         };
@@ -166,7 +166,7 @@ public final class Pipeline {
 
     private Response onReference(CommandSpec spec, Directive directive, UnitOfWork unit) {
         Reference target = stages.references().get(directive.referenceName());
-        CommandContext context = context(directive, target);
+        CommandContext context = context(spec, directive, target);
         // A question on a reference a writer holds may be answered from its last reasoned state, not queued.
         if (unit.single() && target.isBusy()) {
             Optional<Response> early = stages.dispatcher().answerWhileBusy(spec, context);
@@ -232,7 +232,7 @@ public final class Pipeline {
 
     private Response create(CommandSpec spec, Directive directive, UnitOfWork unit) {
         boolean existed = stages.references().find(directive.referenceName()).isPresent();
-        Response response = spec.handler().run(context(directive, null));
+        Response response = spec.handler().run(context(spec, directive, null));
         Reference made = stages.references().find(directive.referenceName()).orElse(null);
         if (made == null) {
             return response;
@@ -253,9 +253,9 @@ public final class Pipeline {
     }
 
     /** What a handler sees of a directive and its reference (null: none). */
-    CommandContext context(Directive directive, Reference reference) {
+    CommandContext context(CommandSpec spec, Directive directive, Reference reference) {
         StateStore state = stages.state();
-        return new CommandContext(directive, reference, stages.references(), stages.config(), stages.rendering(),
+        return new CommandContext(directive, spec.kind(), reference, stages.references(), stages.config(), stages.rendering(),
                 stages.directiveLog(), replaying, stages.dispatcher().commands(), state == null ? List::of
                 : state::damage);
     }

@@ -42,7 +42,7 @@ public final class StandingQueries implements Subscriptions.Evaluator {
             SizeLimits.check(query);
             CommandSpec spec = stages.dispatcher().resolveQuery(query);
             Reference target = stages.references().get(query.referenceName());
-            CommandContext context = pipeline.context(query, target);
+            CommandContext context = pipeline.context(spec, query, target);
             Response underLock = target.locked(stages.config().lockWaitMs(), reference -> {
                 revision[0] = reference.revision();
                 postponed[0] = expectRevision != Subscriptions.ANY_REVISION && revision[0] != expectRevision;
