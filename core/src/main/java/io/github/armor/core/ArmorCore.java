@@ -1,6 +1,7 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core;
 
+import io.github.armor.core.answers.Rendering;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
@@ -9,12 +10,11 @@ import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.api.SizeLimits;
 import io.github.armor.core.command.CommandTable;
-import io.github.armor.core.command.DirectiveLog;
-import io.github.armor.core.command.Rendering;
 import io.github.armor.core.durability.StateStore;
 import io.github.armor.core.events.ChangeEvent;
 import io.github.armor.core.events.EventFeed;
 import io.github.armor.core.events.Subscriptions;
+import io.github.armor.core.log.DirectiveLog;
 import io.github.armor.core.pipeline.Admission;
 import io.github.armor.core.pipeline.Dispatcher;
 import io.github.armor.core.pipeline.Pipeline;

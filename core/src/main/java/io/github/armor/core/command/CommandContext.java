@@ -1,11 +1,15 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.command;
 
+import io.github.armor.core.answers.Literals;
+import io.github.armor.core.answers.Rendering;
+import io.github.armor.core.answers.Syntax;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
+import io.github.armor.core.log.DirectiveLog;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
 import java.util.ArrayList;

@@ -1,6 +1,7 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.command;
 
+import io.github.armor.core.answers.Inferences;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.reference.AllowedPaths;

@@ -1,6 +1,7 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.pipeline;
 
+import io.github.armor.core.answers.Rendering;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
@@ -11,11 +12,10 @@ import io.github.armor.core.api.SizeLimits;
 import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.command.CommandKind;
 import io.github.armor.core.command.CommandSpec;
-import io.github.armor.core.command.DirectiveLog;
-import io.github.armor.core.command.Rendering;
 import io.github.armor.core.durability.StateStore;
 import io.github.armor.core.events.ChangeEvent;
 import io.github.armor.core.events.EventFeed;
+import io.github.armor.core.log.DirectiveLog;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
 import io.github.armor.core.view.RecentDirectives;

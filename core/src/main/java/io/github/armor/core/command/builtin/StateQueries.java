@@ -1,9 +1,12 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-package io.github.armor.core.command;
+package io.github.armor.core.command.builtin;
 
+import io.github.armor.core.answers.Rendering;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
+import io.github.armor.core.command.AnswerSource;
+import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.reasoning.InferredState;
 import io.github.armor.core.reasoning.PublishedStates.Published;
 import io.github.armor.core.reference.Reference;

@@ -1,12 +1,15 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-package io.github.armor.core.command;
+package io.github.armor.core.sparql;
 
+import io.github.armor.core.answers.Rendering;
+import io.github.armor.core.answers.Syntax;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.api.Response.QueryItem;
 import io.github.armor.core.api.SizeLimits;
+import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.reference.Reference;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -38,10 +41,10 @@ import org.apache.jena.sparql.engine.http.Service;
  * the lock is released, in parallel with other queries, within the time limit (node parameter
  * sparql_timeout_ms).
  */
-final class Sparql {
+public final class Sparql {
     private Sparql() {}
 
-    static Response answer(CommandContext c, boolean formatted) {
+    public static Response answer(CommandContext c, boolean formatted) {
         List<String> args = c.args();
         long requestedMs = 0;
         List<String> parts = args;

@@ -1,5 +1,5 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-package io.github.armor.core.command;
+package io.github.armor.core.answers;
 
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
@@ -71,7 +71,7 @@ public final class Syntax {
 
     private Syntax() {}
 
-    static OWLClassExpression classExpression(Reference reference, String text) {
+    public static OWLClassExpression classExpression(Reference reference, String text) {
         ManchesterOWLSyntaxParser parser = parser(reference, text);
         try {
             return parser.parseClassExpression();
@@ -113,7 +113,7 @@ public final class Syntax {
     }
 
     /** One axiom in Manchester syntax ({@code Robot SubClassOf isIn exactly 1 Location}) or functional syntax. */
-    static OWLAxiom axiom(Reference reference, String text) {
+    public static OWLAxiom axiom(Reference reference, String text) {
         if (FUNCTIONAL_AXIOM.matcher(text).matches()) {
             return functionalAxiom(reference, text);
         }
@@ -126,7 +126,7 @@ public final class Syntax {
      * predicate the ontology lacks is created: a class when it takes one argument, an object
      * property when it takes two.
      */
-    static SWRLRule rule(Reference reference, String name, String text) {
+    public static SWRLRule rule(Reference reference, String name, String text) {
         String normalised = SWRLB_PREFIXED.matcher(text).replaceAll("$1(");
         Set<String> newProperties = new java.util.HashSet<>();
         java.util.regex.Matcher binary = BINARY_ATOM.matcher(normalised);

@@ -1,10 +1,16 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-package io.github.armor.core.command;
+package io.github.armor.core.command.builtin;
 
+import io.github.armor.core.answers.Inferences;
+import io.github.armor.core.answers.Rendering;
+import io.github.armor.core.answers.Syntax;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
+import io.github.armor.core.command.CommandGroup;
+import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.reference.Reference;
+import io.github.armor.core.sparql.Sparql;
 import java.util.List;
 import java.util.Set;
 import java.util.function.BiFunction;

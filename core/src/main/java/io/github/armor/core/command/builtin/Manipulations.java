@@ -1,8 +1,15 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-package io.github.armor.core.command;
+package io.github.armor.core.command.builtin;
 
+import io.github.armor.core.answers.Inferences;
+import io.github.armor.core.answers.Literals;
+import io.github.armor.core.answers.Rendering;
+import io.github.armor.core.answers.Syntax;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.command.CommandContext;
+import io.github.armor.core.command.CommandGroup;
+import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.reference.Reference;
 import java.util.ArrayList;
 import java.util.Collections;

@@ -1,9 +1,11 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-package io.github.armor.core.command;
+package io.github.armor.core.command.builtin;
 
+import io.github.armor.core.answers.Syntax;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
+import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.reference.ReasonerRegistry;
 import io.github.armor.core.reference.Reference;
 import java.util.List;

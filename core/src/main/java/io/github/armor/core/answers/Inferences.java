@@ -1,5 +1,5 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-package io.github.armor.core.command;
+package io.github.armor.core.answers;
 
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
@@ -83,7 +83,7 @@ public final class Inferences {
      * does, so all of them are added here for every reasoner (a direct query keeps the
      * reasoner's answer: the unsatisfiable classes are direct subclasses of the leaves only).
      */
-    static Set<OWLClass> subClasses(Reference reference, OWLClassExpression owlClass, boolean direct) {
+    public static Set<OWLClass> subClasses(Reference reference, OWLClassExpression owlClass, boolean direct) {
         if (!owlClass.isAnonymous() && !known(reference, owlClass.asOWLClass())) {
             return Set.of();
         }
@@ -105,7 +105,7 @@ public final class Inferences {
     }
 
     /** The reference's axioms, its imports' included, in a new ontology of a manager of its own. */
-    static OWLOntology copyWithImports(Reference reference) {
+    public static OWLOntology copyWithImports(Reference reference) {
         OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
         try {
             OWLOntology copy = manager.createOntology(reference.ontology().getOntologyID());
@@ -120,7 +120,7 @@ public final class Inferences {
      * A copy of the ontology with the inferred class assertions, property assertions and class
      * hierarchy added; the live ontology is left as it was (SAVE INFERENCE).
      */
-    static OWLOntology withInferences(Reference reference) {
+    public static OWLOntology withInferences(Reference reference) {
         OWLReasoner reasoner = reference.reasonerForQuery();
         OWLOntology copy = copyWithImports(reference);
         OWLOntologyManager manager = copy.getOWLOntologyManager();

@@ -1,5 +1,5 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-package io.github.armor.core.command;
+package io.github.armor.core.log;
 
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
