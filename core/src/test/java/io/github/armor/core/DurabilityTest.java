@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
 import java.nio.file.Files;
@@ -127,11 +128,11 @@ class DurabilityTest {
     void aFailedListLeavesNothingInTheJournal() {
         ArmorCore first = core(true, 1000);
         ok(first, "c", "map", "LOAD FILE", ROBOTICS, "", "false", "HERMIT", "true");
-        ArmorCore.ListResponse list = first.executeList(List.of(
+        ListResponse list = first.executeList(List.of(
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot2", "Robot"),
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "broken")));
         assertFalse(list.success());
-        ArmorCore.ListResponse good = first.executeList(List.of(
+        ListResponse good = first.executeList(List.of(
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot3", "Robot"),
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot4", "Robot")));
         assertTrue(good.success());

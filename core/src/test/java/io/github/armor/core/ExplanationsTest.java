@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.armor.core.api.Response;
-import io.github.armor.core.command.Syntax;
+import io.github.armor.core.answers.Syntax;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;

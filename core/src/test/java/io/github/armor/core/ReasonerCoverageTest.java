@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
 import java.io.IOException;
@@ -133,7 +134,7 @@ class ReasonerCoverageTest {
         f.ok("s", "REMOVE SWRL", "agents", rule);
         assertEquals("", f.ok("s", "QUERY IND CLASS", "Robot").errorDescription());
 
-        ArmorCore.ListResponse failed = f.core.executeList(List.of(
+        ListResponse failed = f.core.executeList(List.of(
                 Directive.of("test", "s", "ADD", "SWRL", "", "agents", rule),
                 Directive.of("test", "s", "ADD", "IND", "CLASS", "r2")));
         assertFalse(failed.success());

@@ -17,7 +17,7 @@ class RollbackDigestTest {
         fx.loadRobotics("map", "PELLET", true);
         fx.ok("map", "ADD OBJECTPROP INVERSE", "visitedAt", "batteryLevel");
         String before = fx.ok("map", "GET REF DIGEST").queriedObjects().get(0);
-        ArmorCore.ListResponse undone = fx.core.executeList(List.of(
+        io.github.armor.core.api.ListResponse undone = fx.core.executeList(List.of(
                 Directive.of("test", "map", "REMOVE", "OBJECTPROP", "INVERSE", "batteryLevel", "visitedAt"),
                 Directive.of("test", "map", "QUERY", "-", "-")));
         assertFalse(undone.success());

@@ -1,7 +1,7 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.explanation;
 
-import io.github.armor.core.command.Syntax;
+import io.github.armor.core.answers.Syntax;
 import io.github.armor.core.reference.Reference;
 import java.util.ArrayList;
 import java.util.Comparator;

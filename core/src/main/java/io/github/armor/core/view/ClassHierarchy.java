@@ -3,10 +3,10 @@ package io.github.armor.core.view;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
+import io.github.armor.core.answers.Syntax;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
-import io.github.armor.core.command.Queries;
-import io.github.armor.core.command.Syntax;
+import io.github.armor.core.command.builtin.Queries;
 import io.github.armor.core.reasoning.ClassifiedSchema;
 import io.github.armor.core.reasoning.PublishedStates.Published;
 import io.github.armor.core.reference.Reference;

@@ -3,9 +3,9 @@ package io.github.armor.core.view;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
+import io.github.armor.core.answers.Rendering;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
-import io.github.armor.core.command.Rendering;
 import io.github.armor.core.reasoning.PublishedStates.Published;
 import io.github.armor.core.reference.Reference;
 import java.util.ArrayList;
