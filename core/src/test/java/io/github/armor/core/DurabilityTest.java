@@ -66,6 +66,33 @@ class DurabilityTest {
         assertEquals(iris("robot1", "robot2"), robots(second));
     }
 
+    /**
+     * LUBM's univ-bench defines Dean by an owl:intersectionOf of one restriction, which functional
+     * syntax (the checkpoint's) writes as the restriction alone: the same class, kept (LOAD was 225).
+     */
+    @Test
+    void anIntersectionOfOneClassIsKeptAsThatClass() {
+        String department = LubmQueriesTest.LUBM.resolve("university0-department0.owl").toString();
+        java.util.function.Supplier<ArmorCore> restart = () -> {
+            cores.forEach(ArmorCore::close);
+            ArmorCore core = new ArmorCore(new io.github.armor.core.api.CoreConfig(true, "PELLET",
+                    List.of(LubmQueriesTest.LUBM), false, 30_000, 0, 0,
+                    new io.github.armor.core.api.CoreConfig.Durability(stateDir, true, true, 1000, 3600)));
+            core.restoreState();
+            cores.add(core);
+            return core;
+        };
+        ArmorCore first = restart.get();
+        ok(first, "c", "lubm", "LOAD FILE", department, "", "false", "PELLET", "false");
+        List<String> deans = ok(first, "c", "lubm", "QUERY IND CLASS", "Dean").queriedObjects();
+        List<String> chairs = ok(first, "c", "lubm", "QUERY IND CLASS", "Chair").queriedObjects();
+        assertTrue(!chairs.isEmpty(), "the department has a chair");
+
+        ArmorCore second = restart.get();
+        assertEquals(deans, ok(second, "c", "lubm", "QUERY IND CLASS", "Dean").queriedObjects());
+        assertEquals(chairs, ok(second, "c", "lubm", "QUERY IND CLASS", "Chair").queriedObjects());
+    }
+
     /** Issue 35 item 9: a restored reference shows the time its reasoning took, not a no-op's 0.0 ms. */
     @Test
     void aRestoredReferenceShowsTheReasoningItsRestoreDid() {
