@@ -607,6 +607,11 @@ public final class ModularReasoner implements OWLReasoner {
      * ontology, and the ABox cannot add to the hierarchy ({@link ClassifiedSchema#covers}).
      */
     private ClassifiedSchema hierarchy() {
+        if (underlyingName.equalsIgnoreCase("JFACT")) {
+            // JFact's kept hierarchy missed an equivalence a schema change made (MAKE EQUIVALENT
+            // CLASS: test_contract_manipulations); its own reasoner answers class questions.
+            return null;
+        }
         InferredState now = current();
         ClassifiedSchema kept = hierarchyCovers ? awaitClassification() : null;
         if (kept == null || !kept.consistent()) {
