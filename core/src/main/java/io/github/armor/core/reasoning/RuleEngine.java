@@ -290,11 +290,7 @@ final class RuleEngine {
             return;
         }
         if (step == plan.length) {
-            if (unsure != null) {
-                if (obstacle == null) {
-                    obstacle = "a SWRL rule's DifferentIndividuals atom matched individuals not asserted different ("
-                            + unsure + ")";
-                }
+            if (undecided(unsure)) {
                 return;
             }
             if (was) {
@@ -621,6 +617,15 @@ final class RuleEngine {
         return term.isVariable() ? binding[term.variable()] : term.constant();
     }
 
+    /** Whether a complete match rests on individuals not asserted different: then an obstacle, said once. */
+    private boolean undecided(String unsure) {
+        if (unsure != null && obstacle == null) {
+            obstacle = "a SWRL rule's DifferentIndividuals atom matched individuals not asserted different ("
+                    + unsure + ")";
+        }
+        return unsure != null;
+    }
+
     /**
      * Joins the atoms of {@code plan} from {@code step} on; {@code unsure} names a pair a
      * DifferentIndividuals atom could not decide (a complete match with one is an obstacle).
@@ -628,11 +633,7 @@ final class RuleEngine {
     private void join(int ruleNumber, Rule rule, int[] plan, int step, Object[] binding, String unsure,
                       Set<Match> found) {
         if (step == plan.length) {
-            if (unsure != null) {
-                if (obstacle == null) {
-                    obstacle = "a SWRL rule's DifferentIndividuals atom matched individuals not asserted different ("
-                            + unsure + ")";
-                }
+            if (undecided(unsure)) {
                 return;
             }
             found.add(new Match(ruleNumber, Arrays.asList(binding.clone())));
