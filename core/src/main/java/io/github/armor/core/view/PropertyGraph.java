@@ -61,9 +61,8 @@ final class PropertyGraph {
     JsonObject graph(String referenceName, List<String> propertyNames, String className, String focusName,
                      int limit) {
         Reference reference = reads.reference(referenceName);
-        // The graph draws inferred links (dashed), which need the reasoner: it reads the reference
-        // itself, in slices, rather than the published state, which holds types only.
-        InferredState state = null;
+        Optional<Published> published = reads.offLock(reference);
+        InferredState state = published.map(Published::state).orElse(null);
         Scope scope = state != null ? scope(reference, propertyNames, className, focusName, state)
                 : reads.whole(reference, r -> scope(r, propertyNames, className, focusName, null));
         Set<OWLNamedIndividual> candidates = new HashSet<>(scope.candidates());
