@@ -24,6 +24,7 @@ setup(
         ],
         # The verbs of the armor command; other packages add theirs to the same group.
         'armor.verbs': [f'{verb} = armor_client.cli.{verb}' for verb in (
-            'call', 'load', 'query', 'refs', 'save', 'scene', 'shell', 'sparql', 'watch')],
+            'call', 'explain', 'load', 'query', 'refs', 'save', 'scene', 'shell', 'sparql',
+            'watch')],
     },
 )

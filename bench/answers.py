@@ -80,4 +80,9 @@ def wrong_in(results: dict) -> List[str]:
             if audit.get(key):
                 wrong.append(f'8. default clients, {run}: {audit[key]} {key.replace("_", " ")} '
                              'after the recovery')
+    for individuals, by_reasoner in results.get('soma', {}).items():
+        for reasoner, entry in by_reasoner.items():
+            if entry['modular'].get('wrong'):
+                wrong.append(f'11. SOMA, {individuals} individuals, {reasoner}: '
+                             f'{entry["modular"]["wrong"]} wrong answers')
     return wrong

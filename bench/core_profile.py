@@ -35,8 +35,9 @@ COMPONENTS = (  # (component, frame prefixes); the first match on a sample's sta
     ('wire: socket and JSON', ('com.google.gson', 'io.github.armor.core.server.WireCodec',
                                'io.github.armor.core.server.CoreServer.readFrame',
                                'io.github.armor.core.server.CoreServer.writeFrame')),
-    ('other ARMOR core code', ('io.github.armor.core.ArmorCore', 'io.github.armor.core.command',
-                               'io.github.armor.core.reference')),
+    ('other ARMOR core code', ('io.github.armor.core.ArmorCore', 'io.github.armor.core.pipeline',
+                               'io.github.armor.core.command', 'io.github.armor.core.answers',
+                               'io.github.armor.core.log', 'io.github.armor.core.reference')),
 )
 _FRAME = re.compile(r'^\s{4}(\S+)\(')
 

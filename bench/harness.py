@@ -21,7 +21,7 @@ REPO = pathlib.Path(__file__).resolve().parents[1]
 CORE_TARGET = REPO / 'core' / 'target'
 HARNESS_CLASS = 'io.github.armor.core.bench.InProcessBatchBench'
 # Main classes of the in-process benchmarks, compiled with the core's tests.
-HARNESS_CLASSES = (HARNESS_CLASS, 'io.github.armor.core.command.LubmBench')
+HARNESS_CLASSES = (HARNESS_CLASS, 'io.github.armor.core.sparql.LubmBench')
 
 # Chosen before rclpy starts in this process; children inherit it.
 os.environ.setdefault('ROS_DOMAIN_ID', str(random.SystemRandom().randint(1, 100)))

@@ -37,7 +37,7 @@ LUBM = REPO / 'bench' / 'data' / 'lubm'
 DEPARTMENT = 'http://www.Department0.University0.edu'
 UB = 'http://swat.cse.lehigh.edu/onto/univ-bench.owl#'
 GROWING_QUERY = 6  # all students: a new graduate student is one by inference
-BENCH_CLASS = 'io.github.armor.core.command.LubmBench'
+BENCH_CLASS = 'io.github.armor.core.sparql.LubmBench'
 
 TARGETS_MS = {'service': 3.0, 'in_process': 1.4, 'first_after_change': 50.0, 'departments': 10.0}
 
@@ -48,16 +48,16 @@ COMPONENTS = (  # (component, frame prefixes); the first match on a sample's sta
      ('uk.ac.manchester.cs.owl.owlapi.OWLOntologyManagerImpl.applyChanges',
       'uk.ac.manchester.cs.owl.owlapi.OWLImmutableOntologyImpl',
       'uk.ac.manchester.cs.owl.owlapi.Internals')),
-    ('SPARQL graph: build or derive', ('io.github.armor.core.command.InferredGraph',
-                                       'io.github.armor.core.command.SparqlGraphs',
-                                       'io.github.armor.core.command.ReasonerAnswers')),
+    ('SPARQL graph: build or derive', ('io.github.armor.core.sparql.InferredGraph',
+                                       'io.github.armor.core.sparql.SparqlGraphs',
+                                       'io.github.armor.core.sparql.ReasonerAnswers')),
     ('query parsing', ('org.apache.jena.sparql.lang',)),
     ('graph lookups (Jena in-memory graph)', ('org.apache.jena.mem', 'org.apache.jena.graph',
-                                              'io.github.armor.core.command.LayeredGraph')),
+                                              'io.github.armor.core.sparql.LayeredGraph')),
     ('ARQ evaluation (joins, iterators)', ('org.apache.jena',)),
-    ('rows: rendering and response', ('io.github.armor.core.command.Sparql.render',
-                                      'io.github.armor.core.command.Sparql.rowText',
-                                      'io.github.armor.core.command.Rendering',
+    ('rows: rendering and response', ('io.github.armor.core.sparql.Sparql.render',
+                                      'io.github.armor.core.sparql.Sparql.rowText',
+                                      'io.github.armor.core.answers.Rendering',
                                       'io.github.armor.core.api')),
     ('wire: socket and JSON', ('com.google.gson', 'io.github.armor.core.server.WireCodec',
                                'io.github.armor.core.server.CoreServer.readFrame',

@@ -8,9 +8,14 @@
 (tests/integration/test_bench_smoke.py), so the suite cannot rot. The scale can also be set
 with the environment variable ARMOR_BENCH_SCALE. Each benchmark is also a script of its own
 (query_latency.py, batch_throughput.py, reasoning_cycle.py, robot_speed.py,
-core_profile.py, lubm.py, default_clients.py, real_shapes.py, scenes.py). Section 10 (scenes)
-runs at full scale only; `python bench/scenes.py --smoke` is its small run
-(tests/integration/test_bench_smoke.py).
+core_profile.py, lubm.py, default_clients.py, real_shapes.py, scenes.py, soma.py,
+explanations.py). Sections 10
+(scenes) and 11 (SOMA) run at full scale only; `python bench/scenes.py --smoke` and
+`python bench/soma.py --smoke` are their small runs (tests/integration/test_bench_smoke.py,
+tests/integration/test_soma.py).
+Section 11 stops each reasoner's run at its budget (bench/soma.py BUDGET_S, WHOLE_BUDGET_S):
+up to about 80 minutes for 100 and 1,000 individuals; 10,000 is `python bench/soma.py --sizes
+10000`.
 
 Every figure stands on checked answers (bench/answers.py): a benchmark stops at a wrong answer
 of ARMOR's, or records it where it also measures alternatives; the suite then writes the report
@@ -33,6 +38,7 @@ from harness import REPO, SCALES, CoreSnapshot
 import batch_throughput
 import core_profile
 import default_clients
+import explanations
 import lubm
 import query_latency
 import real_shapes
@@ -40,6 +46,7 @@ import reasoning_cycle
 import report
 import robot_speed
 import scenes
+import soma
 
 
 def _command_output(*command: str) -> str:
@@ -142,6 +149,11 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
     if scale_name == 'full':
         stage('10. scenes by demonstration (issue 32)')
         results['scenes'] = scenes.measure(scratch, snapshot, scale_name)
+        stage("11. KnowRob's upper ontology, SOMA and DUL (issue 36)")
+        results['soma'] = soma.measure(scratch, snapshot, scale_name, sizes=[100, 1000])
+    stage('12. explanations: time to the first justification (issue 31)')
+    results['explanations'] = explanations.measure(scratch, snapshot,
+                                                   'full' if scale_name == 'full' else 'smoke')
     results['duration_s'] = time.monotonic() - started
     (scratch / 'results.json').write_text(json.dumps(results, indent=2, default=str))
     report_path.write_text(report.render(results) + '\n\n'
@@ -151,7 +163,11 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
                            + real_shapes.__doc__.split('\n\n', 2)[2].strip() + '\n\n'
                            + real_shapes.render(results['real_shapes']) + '\n'
                            + ('\n## 10. Scenes by demonstration (issue 32)\n\n'
-                              + scenes.render(results['scenes']) if 'scenes' in results else ''))
+                              + scenes.render(results['scenes']) if 'scenes' in results else '')
+                           + ("\n\n## 11. KnowRob's upper ontology, SOMA and DUL (issue 36)\n\n"
+                              + soma.render(results['soma']) if 'soma' in results else '')
+                           + '\n\n## 12. Explanations: time to the first justification (issue 31)\n\n'
+                           + explanations.render(results['explanations']) + '\n')
     stage(f'report written to {report_path} (raw figures: {scratch / "results.json"})')
     return results
 

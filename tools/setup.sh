@@ -363,7 +363,7 @@ step_core() {
 # Each plugins/<name>/pom.xml builds a jar for the core's plugin directories, compiled against
 # the installed core; the jars and their own libraries go to install/armor_plugins, which the
 # node loads by default (plugin_dirs defaults to $ARMOR_PLUGIN_DIRS, exported by install/setup.sh).
-PLUGINS_LOGIC=1
+PLUGINS_LOGIC=2
 step_plugins() {
   local poms
   poms="$(ls plugins/*/pom.xml 2>/dev/null || true)"
@@ -378,7 +378,8 @@ step_plugins() {
   local pom dir
   for pom in $poms; do
     dir="$(dirname "$pom")"
-    logged mvn -B -q -f "$pom" package -DskipTests -Dcore.jar="$ROOT/install/armor_core/armor-core.jar"
+    # clean: a resource renamed or deleted in src (a services file) must not linger in the jar.
+    logged mvn -B -q -f "$pom" clean package -DskipTests -Dcore.jar="$ROOT/install/armor_core/armor-core.jar"
     cp "$dir"/target/*.jar install/armor_plugins.new/
     if [ -d "$dir/target/lib" ]; then cp "$dir"/target/lib/*.jar install/armor_plugins.new/; fi
   done

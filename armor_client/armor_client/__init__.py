@@ -30,11 +30,13 @@ _EXPORTS = {
     'ArmorTransport': 'armor_client.transport', 'directive': 'armor_client.transport',
     'SceneAnswer': 'armor_client.scenes', 'SceneClass': 'armor_client.scenes',
     'Recognition': 'armor_client.scenes',
+    'Explanation': 'armor_client.explanations', 'ExplainedAxiom': 'armor_client.explanations',
     **{name: 'armor_client.subscriptions' for name in (
         'AnswerChange', 'Change', 'ChangeWatch', 'Subscription')},
     **{name: 'armor_client.errors' for name in (
         'ArmorArgumentError', 'ArmorCallTimeout', 'ArmorCoreUnavailableError', 'ArmorError',
-        'ArmorFileError', 'ArmorMountError', 'ArmorReasonerError', 'ArmorRolledBackError',
+        'ArmorFileError', 'ArmorMountError', 'ArmorNotEntailedError', 'ArmorReasonerError',
+        'ArmorRolledBackError',
         'ArmorServiceCallError', 'ArmorServiceInternalError', 'ArmorTimeLimitError',
         'ArmorUnknownReferenceError')},
 }

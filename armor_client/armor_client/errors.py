@@ -102,6 +102,10 @@ class ArmorTimeLimitError(ArmorServiceInternalError, TimeoutError):
     """211: a time limit of the service (lock wait, reasoner, SPARQL) was reached."""
 
 
+class ArmorNotEntailedError(ArmorServiceInternalError):
+    """227: the fact an EXPLAIN command names does not hold (or the reference is consistent)."""
+
+
 class ArmorRolledBackError(ArmorServiceInternalError):
     """212: undone or not run because another directive of the same list failed."""
 
@@ -124,6 +128,7 @@ _CLASS_OF_CODE: Dict[int, Type[ArmorServiceInternalError]] = {
     ExitCode.TIMEOUT: ArmorTimeLimitError,
     ExitCode.ROLLED_BACK: ArmorRolledBackError,
     ExitCode.CORE_UNAVAILABLE: ArmorCoreUnavailableError,
+    ExitCode.NOT_ENTAILED: ArmorNotEntailedError,
 }
 
 

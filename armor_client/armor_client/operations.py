@@ -26,6 +26,7 @@ from armor_client.errors import error_for
 from armor_client.faces import ManipulationFaces, QueryFaces
 from armor_client.planning import PlannerBridge
 from armor_client.scenes import Scenes
+from armor_client.explanations import Explanations
 from armor_contract import catalogue
 from armor_client.values import typed_argument, Value
 
@@ -435,6 +436,27 @@ class SessionCommands:
                              lambda response: int(response.queried_objects[0])
                              if response.queried_objects else 0)
 
+    def digest(self, reference: str) -> str:
+        """A SHA-256 of a reference's asserted axioms, annotations and imports (GET REF DIGEST).
+
+        Equal digests mean equal ontologies: compare one before and after an answer was lost,
+        or between two copies of a reference.
+        """
+        return self._session('', ('GET', 'REF', 'DIGEST'), [reference],
+                             lambda response: response.queried_objects[0]
+                             if response.queried_objects else '')
+
+    def state_damage(self) -> List[Dict[str, Any]]:
+        """What the state directory could not restore or cannot keep now (GET STATE DAMAGE).
+
+        Returns:
+            One dict per damaged reference (``reference``, ``restored``, ``revision``,
+            ``problems``, ``kept_in``, as docs/durability.md describes); empty when nothing.
+        """
+        return self._session('', ('GET', 'STATE', 'DAMAGE'), [],
+                             lambda response: [json.loads(item)
+                                               for item in response.queried_objects])
+
     def changes_since(self, reference: str, revision: int = -1,
                       client: Optional[str] = None) -> ChangeHistory:
         """A reference's acknowledged changes after a revision, oldest first (GET REF CHANGES).
@@ -484,7 +506,8 @@ class SessionCommands:
         return self._session('', ('LOG', 'FILE', 'ON'), [path], Answers.nothing)
 
 
-class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge, Scenes):
+class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge, Scenes,
+                    Explanations):
     """What Reference and AsyncReference share: the state, sending, and reading an answer.
 
     Each directive goes through the session's ``call``, and its answer through the session's

@@ -21,6 +21,7 @@ VARIANTS = {
     'save': [{}, {'inferences': True}], 'log_to_screen': [{'on': True}, {'on': False}],
     'log_to_file': [{'path': '/tmp/armor.log'}, {'path': None}],
     'sparql': [{}, {'timeout_ms': 10}], 'classes_of': [{}, {'most_specific': True}],
+    'learn_scene': [{'elements': [('SPHERE', [0.0, 0.0, 0.0])], 'threshold': 0.5}],
 }
 
 
@@ -49,6 +50,8 @@ def placeholder(parameter: inspect.Parameter) -> Any:
         return 1
     if 'bool' in annotation and 'Union' not in annotation:
         return True
+    if 'float' in annotation and 'Union' not in annotation:
+        return 0.5
     return 'FUNCTIONAL' if parameter.name == 'characteristic' else 'x'
 
 

@@ -22,7 +22,8 @@ def completer() -> Completer:
 
 
 @pytest.mark.parametrize('line, expected', [
-    ('', ['ADD', 'APPLY', 'CREATE', 'DISJOINT', 'DROP', 'GET', 'LOAD', 'LOG', 'MAKE', 'MOUNT',
+    ('', ['ADD', 'APPLY', 'CREATE', 'DISJOINT', 'DROP', 'EXPLAIN', 'GET', 'LOAD', 'LOG', 'MAKE',
+          'MOUNT',
           'QUERY', 'REASON', 'REMOVE', 'RENAME', 'REPLACE', 'SAVE', 'UNMOUNT', 'help', 'names',
           'quit', 'refs', 'use']),
     ('QU', ['QUERY']), ('qu', ['QUERY', 'quit']), ('QUERY IND C', ['CLASS']),

@@ -39,3 +39,4 @@ class ExitCode(enum.IntEnum):
     UNKNOWN_NAME = 224
     NOT_DURABLE = 225
     CLIENT_LIMIT = 226
+    NOT_ENTAILED = 227

@@ -196,6 +196,17 @@ std::uint64_t Armor::revision(const std::string & reference) const
   return answer.empty() ? 0 : std::stoull(answer.front());
 }
 
+std::string Armor::digest(const std::string & reference) const
+{
+  auto answer = execute("", contract::GET_REF_DIGEST, {reference}).queried_objects;
+  return answer.empty() ? "" : answer.front();
+}
+
+std::vector<std::string> Armor::state_damage() const
+{
+  return execute("", contract::GET_STATE_DAMAGE, {}).queried_objects;
+}
+
 std::vector<std::string> Armor::changes_since(
   const std::string & reference, std::int64_t revision, const std::string & client) const
 {
@@ -284,6 +295,63 @@ std::vector<Value> Reference::values(
     values.push_back(answer_value(text, state_->iris));
   }
   return values;
+}
+
+namespace
+{
+// EXPLAIN's lines "<n> <kind> <axiom>" grouped by n, in the order answered.
+Justifications grouped(const std::vector<std::string> & lines)
+{
+  Justifications found;
+  std::vector<std::string> numbers;
+  for (const std::string & line : lines) {
+    auto space = line.find(' ');
+    std::string number = line.substr(0, space);
+    std::string rest = space == std::string::npos ? "" : line.substr(space + 1);
+    if (numbers.empty() || numbers.back() != number) {
+      numbers.push_back(number);
+      found.emplace_back();
+    }
+    found.back().push_back(rest);
+  }
+  return found;
+}
+}  // namespace
+
+Justifications Reference::explain_instance(
+  const std::string & individual, const std::string & cls, int justifications) const
+{
+  return grouped(answer(contract::EXPLAIN_IND_CLASS,
+    {individual, cls, std::to_string(justifications)}).queried_objects);
+}
+
+Justifications Reference::explain_object_property(
+  const std::string & prop, const std::string & subject, const std::string & object,
+  int justifications) const
+{
+  return grouped(answer(contract::EXPLAIN_OBJECTPROP_IND,
+    {prop, subject, object, std::to_string(justifications)}).queried_objects);
+}
+
+Justifications Reference::explain_data_property(
+  const std::string & prop, const std::string & individual, const std::string & type,
+  const std::string & value, int justifications) const
+{
+  return grouped(answer(contract::EXPLAIN_DATAPROP_IND,
+    {prop, individual, type, value, std::to_string(justifications)}).queried_objects);
+}
+
+Justifications Reference::explain_subclass(
+  const std::string & sub, const std::string & super, int justifications) const
+{
+  return grouped(answer(contract::EXPLAIN_CLASS_CLASS,
+    {sub, super, std::to_string(justifications)}).queried_objects);
+}
+
+Justifications Reference::explain_inconsistency(int justifications) const
+{
+  return grouped(answer(contract::EXPLAIN_INCONSISTENCY,
+    {std::to_string(justifications)}).queried_objects);
 }
 
 std::vector<std::string> Reference::expressions(

@@ -134,6 +134,13 @@ void every_other_method(const armor::Armor & armor, armor::Reference & ref)
   armor.mounted_by("r");
   armor.revision("r");
   armor.changes_since("r", 3);
+  armor.digest("r");
+  armor.state_damage();
+  ref.explain_instance("i", "C");
+  ref.explain_object_property("p", "i", "j", 2);
+  ref.explain_data_property("p", "i", "INTEGER", "3");
+  ref.explain_subclass("C", "D");
+  ref.explain_inconsistency();
   armor.log_to_screen(true);
   armor.log_to_screen(false);
   armor.log_to_file(std::string("/tmp/armor.log"));
@@ -437,3 +444,16 @@ TEST(Values, ValuesPickTheirArmorTypeAndLexicalForm)
 }
 
 }  // namespace
+
+TEST(Explanations, LinesAreGroupedByTheirJustificationNumber)
+{
+  auto transport = std::make_shared<RecordingTransport>();
+  transport->answer.queried_objects = {"1 asserted robot1 Type Robot", "1 axiom Robot SubClassOf Agent",
+    "2 asserted robot1 isIn kitchen", "2 axiom isIn Domain Agent"};
+  armor::Armor armor("me", transport);
+  armor::Justifications found = armor.reference("ref").explain_instance("robot1", "Agent", 2);
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0], (std::vector<std::string>{"asserted robot1 Type Robot", "axiom Robot SubClassOf Agent"}));
+  EXPECT_EQ(found[1], (std::vector<std::string>{"asserted robot1 isIn kitchen", "axiom isIn Domain Agent"}));
+  EXPECT_EQ(transport->sent.back().args, (std::vector<std::string>{"robot1", "Agent", "2"}));
+}

@@ -2,7 +2,7 @@
 # Builds a plugin jar of the knowledge core from a plugin folder, against the installed core
 # (source install/setup.bash first). Any plugin laid out as examples/plugins/hello_command is:
 #   PLUGIN_DIR/src/**.java       its classes
-#   PLUGIN_DIR/META-INF/...      its services files (io.github.armor.core.command.CommandGroup)
+#   PLUGIN_DIR/META-INF/...      its services files (io.github.armor.core.spi.CommandGroup)
 #   PLUGIN_DIR/lib/*.jar         libraries it needs (optional): compiled against, copied beside it
 # Usage:
 #   bash examples/plugins/build.sh PLUGIN_DIR OUT_DIR [JAR_NAME]   (default: PLUGIN_DIR's name.jar)

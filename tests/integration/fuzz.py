@@ -173,6 +173,7 @@ class Fuzzer:
         self.undefined = []
         self.changed_by_rejected = []
         self.unanswered = 0
+        self.timed_out = 0
         self.slow = []
         self.sent = 0
         self.rejected = 0
@@ -246,7 +247,18 @@ class Fuzzer:
                           f'{[a[:60] for a in args[:4]]}', flush=True)
             touches_target = any(r.reference_name == 'target' for r in sent)
             query = command is not None and command['kind'] == 'query' and len(sent) == 1
-            if acknowledged and not query:
+            if any(getattr(r, 'timeout', False) for r in responses):
+                # The node stopped waiting ("the directive may still complete"): neither
+                # acknowledged nor rejected. The core serialises the reference, so the state read
+                # next comes after it; a revision that moved means it was applied.
+                self.timed_out += 1
+                if touches_target:
+                    now = self.target_state()
+                    if now[1] != self.state[1]:
+                        for r in sent:
+                            self._shadow(r)
+                    self.state = now
+            elif acknowledged and not query:
                 for r in sent:
                     self._shadow(r)
                 if touches_target:
@@ -288,7 +300,8 @@ class Fuzzer:
         return (f'{self.sent} directives ({", ".join(f"{k}: {n}" for k, n in sorted(self.kinds.items()))}) '
                 f'in {elapsed_s:.0f} s ({self.sent / max(elapsed_s, 1e-9):.0f}/s); node alive: {alive}; '
                 f'crashes (core restarts, 216): {self.codes.get(216, 0)}; '
-                f'answers lost: {self.unanswered}; undefined exit codes: {len(self.undefined)}; '
+                f'answers lost: {self.unanswered}; timed out at the node (applied or not, as the '
+                f'revision said): {self.timed_out}; undefined exit codes: {len(self.undefined)}; '
                 f'rejected on the target: {self.rejected}, of which changed its state: '
                 f'{len(self.changed_by_rejected)}; axioms differing from the shadow: '
                 f'{len(differences)}')

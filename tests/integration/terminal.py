@@ -24,10 +24,14 @@ class Terminal:
                                         env={**os.environ, 'TERM': 'dumb'})
         os.close(slave)
         self.screen = ''
+        self._matched_to = 0
 
     def wait_for(self, text: str, timeout_s: float = 60.0) -> str:
-        """Read until text has appeared since the last wait; returns what was read."""
-        start = len(self.screen)
+        """Read until text appears after what the last wait matched; returns the screen from there.
+
+        What one read brings may hold the next awaited text too: it counts, as on a screen.
+        """
+        start = self._matched_to
         deadline = time.monotonic() + timeout_s
         while text not in self.screen[start:]:
             if time.monotonic() > deadline:
@@ -38,6 +42,8 @@ class Terminal:
                     self.screen += os.read(self._master, 4096).decode('utf-8', 'replace')
                 except OSError:
                     break
+        found = self.screen.index(text, start) if text in self.screen[start:] else len(self.screen)
+        self._matched_to = found + len(text)
         return self.screen[start:]
 
     def type(self, keys: str) -> None:

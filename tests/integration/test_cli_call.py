@@ -50,3 +50,53 @@ def test_later_calls_go_through_the_relay_with_the_same_answers(armor):
         assert result.returncode == 0 and result.stdout == direct.stdout, result.stderr
     assert failed.returncode == 1 and 'error 206' in failed.stderr, failed.stderr
     assert not os.path.exists(call_relay.socket_path())
+
+
+# An ARMOR service that proves its response path (GET ALL REFS) and then never answers.
+SILENT_SERVICE = '''
+import sys, threading
+import rclpy
+from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.executors import MultiThreadedExecutor
+from armor_msgs.srv import ArmorDirective
+rclpy.init()
+node = rclpy.create_node('silent_armor', namespace=sys.argv[1])
+def serve(request, response):
+    if request.armor_request.command != 'GET':
+        print('received', request.armor_request.command, flush=True)
+        threading.Event().wait()
+    response.armor_response.success = True
+    return response
+node.create_service(ArmorDirective, 'armor_interface_srv', serve,
+                    callback_group=ReentrantCallbackGroup())
+print('serving', flush=True)
+executor = MultiThreadedExecutor(num_threads=4)
+executor.add_node(node)
+executor.spin()
+'''
+
+
+def test_call_ends_on_sigterm_while_it_waits_for_an_answer():
+    """`timeout 300 armor call ... LOAD ...` must end at 300 s, as Ctrl-C ends it (issue 36)."""
+    import signal
+    namespace = f'/silent_armor_{os.getpid()}'
+    service = subprocess.Popen([sys.executable, '-c', SILENT_SERVICE, namespace],
+                               stdout=subprocess.PIPE, text=True)
+    try:
+        assert service.stdout.readline().strip() == 'serving'
+        call = subprocess.Popen(
+            [sys.executable, '-m', 'armor_client.cli', 'call', '--no-relay', '--namespace',
+             namespace, '--wait', '60', 'kitchen', 'LOAD', 'FILE', '--', '/nowhere.owl'],
+            stderr=subprocess.DEVNULL)
+        try:
+            assert service.stdout.readline().strip() == 'received LOAD'
+            call.send_signal(signal.SIGTERM)
+            returncode = call.wait(timeout=20)
+        finally:
+            if call.poll() is None:
+                call.kill()
+                call.wait()
+        assert returncode == 128 + signal.SIGTERM, returncode
+    finally:
+        service.kill()
+        service.wait()

@@ -30,7 +30,10 @@ def test_queries_on_other_references_run_during_a_long_reason(armor_node, call):
         latencies.append(time.monotonic() - sent)
         assert answer.queried_objects == iris('kitchen')
     worker.join()
-    assert reason_times['response'].success
+    # A long REASON ends done, or at the node's reasoner time limit (30 s by default) on a slow
+    # machine: either way it held its reference that long.
+    reasoned = reason_times['response']
+    assert reasoned.success or reasoned.exit_code == 211, reasoned.error_description
     reason_s = reason_times['end'] - reason_times['start']
     # Queries were answered while REASON ran, each far faster than the REASON itself.
     assert len(latencies) >= 3, f'REASON took only {reason_s:.2f} s: too short to overlap'

@@ -104,8 +104,10 @@ def test_the_node_declares_exactly_the_cores_settings_and_its_own_parameters(arm
         described = _service(node, DescribeParameters, '/armor_service/describe_parameters',
                              DescribeParameters.Request(names=sorted(expected))).descriptors
         read_only = {d.name for d in described if d.read_only}
-        assert read_only == expected - {'request_timeout_s', 'subscription_idle_s',
-                                        'subscriptions_per_client'}
+        changeable = {p.name for p in NODE_PARAMETERS if not p.read_only}
+        assert {'request_timeout_s', 'subscription_idle_s', 'subscriptions_per_client',
+                'sit_position_threshold', 'sit_axis_threshold'} <= changeable
+        assert read_only == expected - changeable
     finally:
         node.destroy_node()
 

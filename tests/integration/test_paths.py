@@ -45,7 +45,7 @@ def test_the_node_refuses_a_relative_path_naming_the_folder_it_would_have_used(a
     assert refused.exit_code == 213, refused.error_description
     assert refused.error_description.startswith(
         "relative path 'robotics.owl' refused: send an absolute path (the node would have taken "
-        f"it as {armor_node.scratch / 'robotics.owl'}, in its own working directory"), \
+        f"it as {armor_node.scratch / 'cwd' / 'robotics.owl'}, in its own working directory"), \
         refused.error_description
 
 

@@ -75,6 +75,7 @@ def main(argv=None) -> int:
     # Only the verb's own module: the others import rclpy, which a relayed call never needs.
     args = build_parser(point.name if point is not None else '').parse_args(argv)
     args.directive_args = trailing
+    _end_on_sigterm()
     try:
         return args.run(args)
     except KeyboardInterrupt:
@@ -87,6 +88,20 @@ def main(argv=None) -> int:
     except RuntimeError as error:
         print(f'armor {args.verb}: {error}', file=sys.stderr)
         return EXIT_USAGE
+
+
+def _end_on_sigterm() -> None:
+    """SIGTERM ends a verb as Ctrl-C does (`timeout 60 armor call ...` must end at 60 s).
+
+    rclpy.init() installs its own SIGTERM handler, which shuts ROS down and then calls the
+    handler that was there before only if that is a function: with the default action there, a
+    verb waiting for an answer was left waiting forever. Installed before any verb starts ROS,
+    this handler is the one rclpy calls; it leaves through SystemExit, so `with` blocks close.
+    """
+    def terminate(signum, frame):
+        raise SystemExit(128 + signum)
+    if signal.getsignal(signal.SIGTERM) == signal.SIG_DFL:
+        signal.signal(signal.SIGTERM, terminate)
 
 
 if __name__ == '__main__':

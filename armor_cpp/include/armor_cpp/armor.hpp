@@ -34,6 +34,9 @@ namespace armor
 {
 
 class Reference;
+
+// The justifications of one fact: each a list of "<kind> <axiom>" lines.
+using Justifications = std::vector<std::vector<std::string>>;
 class Batch;
 
 // The reasoners every node has; any OWLReasonerFactory class name works too.
@@ -149,6 +152,12 @@ public:
   std::vector<std::string> changes_since(
     const std::string & reference, std::int64_t revision = -1,
     const std::string & client = "") const;
+  // A SHA-256 of a reference's asserted axioms, annotations and imports (GET REF DIGEST):
+  // equal digests, equal ontologies.
+  std::string digest(const std::string & reference) const;
+  // What the state directory could not restore or cannot keep now, one JSON object each
+  // (GET STATE DAMAGE; docs/durability.md); empty when nothing.
+  std::vector<std::string> state_damage() const;
   // Turn the node's logging of directives to its screen on or off (LOG SCREEN ON/OFF).
   void log_to_screen(bool on) const;
   // Log directives to a file on the node's machine; empty stops it (LOG FILE ON/OFF).
@@ -220,6 +229,21 @@ public:
   bool ask(const std::string & query) const;
   // Whether the ontology is consistent, and why not (QUERY CONSISTENCY).
   Consistency check_consistency() const;
+
+  // Why a fact holds (docs/explanations.md): up to `justifications` minimal sets of axioms
+  // that entail it, each a list of lines "<kind> <axiom>" (kind: asserted, axiom or rule);
+  // a fact that does not hold is an ArmorError with code 227.
+  Justifications explain_instance(
+    const std::string & individual, const std::string & cls, int justifications = 1) const;
+  Justifications explain_object_property(
+    const std::string & prop, const std::string & subject, const std::string & object,
+    int justifications = 1) const;
+  Justifications explain_data_property(
+    const std::string & prop, const std::string & individual, const std::string & type,
+    const std::string & value, int justifications = 1) const;
+  Justifications explain_subclass(
+    const std::string & sub, const std::string & super, int justifications = 1) const;
+  Justifications explain_inconsistency(int justifications = 1) const;
 
   // The reference itself (never refused because of a mount)
 

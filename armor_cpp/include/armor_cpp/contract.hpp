@@ -224,9 +224,19 @@ inline constexpr Command QUERY_SPARQL{"QUERY", "SPARQL", "", Kind::Query, 1, 0, 
 inline constexpr Command QUERY_SPARQL_FORMATTED{"QUERY", "SPARQL", "FORMATTED", Kind::Query, 1, 0, true, false};
 // is it consistent, and if not, why
 inline constexpr Command QUERY_CONSISTENCY{"QUERY", "CONSISTENCY", "", Kind::Query, 0, 0, false, false};
+// why the individual is an instance of the class: its justifications
+inline constexpr Command EXPLAIN_IND_CLASS{"EXPLAIN", "IND", "CLASS", Kind::Query, 2, 1, false, false};
+// why the individual has the object property value: its justifications
+inline constexpr Command EXPLAIN_OBJECTPROP_IND{"EXPLAIN", "OBJECTPROP", "IND", Kind::Query, 3, 1, false, false};
+// why the individual has the data property value: its justifications
+inline constexpr Command EXPLAIN_DATAPROP_IND{"EXPLAIN", "DATAPROP", "IND", Kind::Query, 4, 1, false, false};
+// why the first class is a subclass of the second: its justifications
+inline constexpr Command EXPLAIN_CLASS_CLASS{"EXPLAIN", "CLASS", "CLASS", Kind::Query, 2, 1, false, false};
+// why the reference is inconsistent: the sets of axioms that contradict each other
+inline constexpr Command EXPLAIN_INCONSISTENCY{"EXPLAIN", "INCONSISTENCY", "", Kind::Query, 0, 1, false, false};
 
 // Every command the core answers, in the catalogue's order.
-inline constexpr std::array<const Command *, 94> kCommands{
+inline constexpr std::array<const Command *, 99> kCommands{
   &LOAD_FILE,
   &LOAD_WEB,
   &LOAD_FILE_MOUNTED,
@@ -321,6 +331,11 @@ inline constexpr std::array<const Command *, 94> kCommands{
   &QUERY_SPARQL,
   &QUERY_SPARQL_FORMATTED,
   &QUERY_CONSISTENCY,
+  &EXPLAIN_IND_CLASS,
+  &EXPLAIN_OBJECTPROP_IND,
+  &EXPLAIN_DATAPROP_IND,
+  &EXPLAIN_CLASS_CLASS,
+  &EXPLAIN_INCONSISTENCY,
 };
 
 // Every exit code a response can carry (ExitCode.java).
@@ -354,6 +369,7 @@ enum class ExitCode : int
   UNKNOWN_NAME = 224,  // a query names an entity the reference does not know (node parameter strict_names)
   NOT_DURABLE = 225,  // not durable: the state directory did not take the change (disk full, I/O error, read-only); nothing changed
   CLIENT_LIMIT = 226,  // the client holds as many references or subscriptions as one client may
+  NOT_ENTAILED = 227,  // the fact to explain does not hold (or the reference is consistent): nothing to explain
 };
 
 }  // namespace armor::contract

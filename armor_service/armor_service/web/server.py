@@ -16,6 +16,7 @@ Routes (all read-only; none changes an ontology):
   POST /api/references/{ref}/dl              {"expression"}: QUERY IND DL and QUERY CLASS DL
   POST /api/references/{ref}/sparql          {"query"}: QUERY SPARQL FORMATTED
   GET  /api/references/{ref}/scenes[/recent] the SIT plugin's learned scenes, last scenes
+  GET  /api/references/{ref}/explain?kind=&arg= EXPLAIN: why an inferred fact holds ("why?")
   GET  /api/live                             WebSocket: the table of revisions after each change
 
 Bound to the loopback interface (the default), it answers only requests addressed to a loopback
@@ -34,6 +35,7 @@ from aiohttp import web, WSMsgType
 from armor_service.core_process import CoreUnavailable
 from armor_service.web.live import LiveUpdates
 from armor_service.web.reads import CoreReads, SharedAnswers, ViewFailed, WEB_CLIENT
+from armor_service.web.explanations import ExplanationRoutes
 from armor_service.web.scenes import SceneRoutes
 
 STATIC = pathlib.Path(__file__).resolve().parent / 'static'
@@ -220,6 +222,9 @@ class _Routes:
         app.router.add_post(prefix + '/dl', self.dl_query)
         app.router.add_post(prefix + '/sparql', self.sparql)
         SceneRoutes(self._json_lines).add_to(app, prefix)
+        ExplanationRoutes(self._reads.directive, lambda key, fetch, reference: self._shared(
+            key, self._live.version(reference), REFERENCE_MAX_AGE_S, fetch, reference)
+        ).add_to(app, prefix)
 
     async def index(self, request: web.Request) -> web.StreamResponse:
         return web.FileResponse(STATIC / 'index.html')

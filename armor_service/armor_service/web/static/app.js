@@ -127,9 +127,68 @@ function entityLink(entity, kind) {
       : entity.iri, text: entity.name});
 }
 
-function entityList(entities, kind) {
+/** Entities as links; with {@code why}, each inferred one gets the "why?" it makes. */
+function entityList(entities, kind, why) {
   if (!entities.length) return el('span', {className: 'muted', text: 'none'});
-  return el('span', {className: 'entity-list'}, entities.map((e) => el('span', {}, entityLink(e, kind))));
+  return el('span', {className: 'entity-list'}, entities.map((e) => el('span', {}, entityLink(e, kind),
+    why && e.asserted === false ? why(e) : null)));
+}
+
+// ---------------------------------------------------------------- why? (EXPLAIN, docs/explanations.md)
+/** A "why?" button for an inferred fact: kind instance, objectprop or subclass, and its arguments (IRIs). */
+function whyButton(kind, args) {
+  return el('button', {className: 'why', type: 'button', 'data-why': kind, 'data-args': JSON.stringify(args),
+    title: 'why does the reasoner infer this? (its justifications)', text: 'why?'});
+}
+
+/**
+ * An axiom's text with each <IRI> a link to its page: a class when the hierarchy has it or its
+ * name starts with a capital (the OWL convention, for a tree not loaded yet), else an individual.
+ */
+function axiomNodes(text) {
+  const nodes = [];
+  let last = 0;
+  for (const match of text.matchAll(/<([^<>\s]+)>/g)) {
+    nodes.push(text.slice(last, match.index));
+    const iri = match[1];
+    const kind = classByIri.has(iri) || /^[A-Z]/.test(shortName(iri)) ? 'class' : 'individual';
+    nodes.push(el('a', {className: 'entity', 'data-kind': kind, 'data-iri': iri, href: '#', title: iri,
+      text: shortName(iri)}));
+    last = match.index + match[0].length;
+  }
+  nodes.push(text.slice(last));
+  return nodes;
+}
+
+/** Shows the justifications of the button's fact in a box after it (a second click hides them). */
+async function showWhy(button) {
+  const next = button.nextElementSibling;
+  if (next && next.classList.contains('why-box')) {
+    next.remove();
+    return;
+  }
+  const box = el('div', {className: 'why-box'});
+  button.after(box);
+  fill(box, el('p', {className: 'muted', text: 'explaining…'}));
+  const params = new URLSearchParams({kind: button.dataset.why});
+  for (const arg of JSON.parse(button.dataset.args)) params.append('arg', arg);
+  try {
+    const answer = await api(referencePath('/explain?' + params));
+    if (!answer.justifications.length) {
+      fill(box, directiveFailure(answer));
+      return;
+    }
+    fill(box, answer.justifications.map((justification, index) => el('div', {className: 'justification'},
+      el('p', {className: 'muted', text: `justification ${index + 1}`}),
+      el('ul', {}, justification.map((axiom) => el('li', {className: `axiom ${axiom.kind}`},
+        el('span', {className: 'tag', text: axiom.kind}), ' ', axiom.kind === 'rule' ? `${axiom.rule}: ` : '',
+        axiomNodes(axiom.text), Object.keys(axiom.bindings).length ? [' (', Object.entries(axiom.bindings)
+          .map(([variable, value], i) => [i ? ', ' : '', `${variable}=`, axiomNodes(value)]), ')'] : null))))),
+      answer.timeout ? el('p', {className: 'error', text: answer.description}) : null,
+      el('p', {className: 'why-sentence', text: answer.sentence}));
+  } catch (error) {
+    showError(box, error);
+  }
 }
 
 function showError(container, error) {
@@ -225,7 +284,8 @@ function renderReferenceList() {
     const rows = [
       ['reasoner', r.reasoner],
       ['reasoning', r.reasoning],
-      ['classes', r.busy ? '…' : r.classes],
+      ['profile', r.profile],
+      ['classes', r.busy ? '…' : (r.classification || r.classes)],
       ['individuals', r.busy ? '…' : r.individuals],
       ['axioms', r.busy ? '…' : r.axioms],
     ];
@@ -252,7 +312,8 @@ function renderSummary() {
     summary.mounted_by ? `mounted by ${summary.mounted_by}${leaseText(summary)}` : 'not mounted',
   ];
   if (!summary.busy) {
-    parts.push(`${summary.classes} classes`, `${summary.individuals} individuals`,
+    parts.push(`profile ${summary.profile}`, summary.classification || `${summary.classes} classes`,
+      `${summary.individuals} individuals`,
       `${summary.axioms} axioms (${summary.logical_axioms} logical)`);
     if (summary.pending_changes) parts.push('changes waiting for APPLY');
   } else {
@@ -428,7 +489,10 @@ function renderGraph(data) {
   note.textContent = data.truncated
     ? `${shown}: a sample of ${data.candidates}, grown from ${graphChoice().focus || 'the first by name'}`
       + ' (choose a class or an individual to look around it)'
-    : `${shown}. Solid: asserted; dashed: inferred. Colour: most specific type.`;
+    : data.inferred_links === false
+      ? `${shown}. Links as asserted (read without waiting for the reasoner; an individual's page shows`
+        + ' inferred ones). Colour: most specific type.'
+      : `${shown}. Solid: asserted; dashed: inferred. Colour: most specific type.`;
   if (!window.cytoscape) {
     note.textContent = 'The graph library is missing (armor_service/web/static/vendor): run make setup.';
     return;
@@ -534,7 +598,7 @@ function renderClassTree(hierarchy) {
     if (!owlClass.parents.length) roots.push({owlClass, asserted: true});
     for (const parent of owlClass.parents) {
       if (!classChildren.has(parent.iri)) classChildren.set(parent.iri, []);
-      classChildren.get(parent.iri).push({owlClass, asserted: parent.asserted});
+      classChildren.get(parent.iri).push({owlClass, asserted: parent.asserted, parent: parent.iri});
     }
   }
   const heading = el('p', {className: 'muted', text: hierarchy.inferred
@@ -548,11 +612,12 @@ function renderClassTree(hierarchy) {
 
 /** Appends one <li> per class; a class's children are built when it is opened (large hierarchies). */
 function appendClassItems(list, items, ancestors) {
-  for (const {owlClass, asserted, children} of items.sort((a, b) => a.owlClass.name.localeCompare(b.owlClass.name))) {
+  for (const {owlClass, asserted, children, parent} of items.sort((a, b) => a.owlClass.name.localeCompare(b.owlClass.name))) {
     const kids = children || classChildren.get(owlClass.iri) || [];
     const label = el('span', {className: `class-name ${owlClass.unsatisfiable ? 'unsatisfiable' : ''}`},
       el('span', {className: asserted ? 'asserted' : 'inferred', 'data-iri': owlClass.iri, text: owlClass.name}),
       asserted ? null : el('span', {className: 'tag', text: '(inferred)'}),
+      asserted || !parent || parent === 'owl:Thing' ? null : whyButton('subclass', [owlClass.iri, parent]),
       owlClass.equivalents.length ? el('span', {className: 'tag',
         text: '≡ ' + owlClass.equivalents.map((e) => e.name).join(', ')}) : null,
       owlClass.unsatisfiable ? el('span', {className: 'tag unsatisfiable', text: '⚠ unsatisfiable'}) : null);
@@ -656,16 +721,18 @@ const individualDetailRefresher = new Refresher(async () => {
   }
   if (iri !== state.individualIri) return;
   const values = (entries, render) => entries.length ? entries.map((entry) => [
-    el('dt', {text: entry.property.name}), el('dd', {}, render(entry.values))])
+    el('dt', {text: entry.property.name}), el('dd', {}, render(entry.values, entry))])
     : [el('dd', {className: 'muted', text: 'none'})];
   fill(panel,
     el('h3', {text: individual.name}),
     el('dl', {},
-      el('dt', {text: 'Types'}), el('dd', {}, entityList(individual.types, 'class')),
+      el('dt', {text: 'Types'}), el('dd', {}, entityList(individual.types, 'class',
+        (type) => whyButton('instance', [individual.iri, type.iri]))),
       individual.same_as.length ? [el('dt', {text: 'Same as'}), el('dd', {}, entityList(individual.same_as,
         'individual'))] : [],
       el('dt', {text: 'Object properties'}),
-      values(individual.object_values, (v) => entityList(v, 'individual')),
+      values(individual.object_values, (v, entry) => entityList(v, 'individual',
+        (value) => whyButton('objectprop', [entry.property.iri, individual.iri, value.iri]))),
       el('dt', {text: 'Data properties'}),
       values(individual.data_values, (v) => el('span', {className: 'entity-list'}, v.map((item) =>
         el('span', {className: item.asserted ? 'asserted' : 'inferred', text: item.value}))))),
@@ -824,6 +891,12 @@ function wire() {
     if (button) select(state.selected, button.dataset.tab);
   });
   document.body.addEventListener('click', (event) => {
+    const why = event.target.closest('button.why');
+    if (why) {
+      event.preventDefault();
+      showWhy(why);
+      return;
+    }
     const link = event.target.closest('a.entity');
     if (!link) return;
     event.preventDefault();

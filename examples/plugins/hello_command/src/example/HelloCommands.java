@@ -2,18 +2,19 @@
 package example;
 
 import io.github.armor.core.api.Response;
-import io.github.armor.core.command.CommandContext;
-import io.github.armor.core.command.CommandGroup;
-import io.github.armor.core.command.CommandTable;
-import io.github.armor.core.command.Inferences;
+import io.github.armor.core.spi.CommandGroup;
+import io.github.armor.core.spi.CommandTable;
+import io.github.armor.core.spi.Context;
 import java.util.List;
 import org.semanticweb.owlapi.model.AddAxiom;
+import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.OWLClass;
 
 /**
  * A tiny plugin of the knowledge core (docs/extending.md): a command that needs no reference,
  * one that changes a reference and one that asks the reasoner. Built into a jar with
  * examples/plugins/build.sh; a node loads it from a directory of its plugin_dirs parameter.
+ * It uses only the core's plugin interface (io.github.armor.core.spi) and its api.
  */
 public final class HelloCommands implements CommandGroup {
     @Override
@@ -22,16 +23,14 @@ public final class HelloCommands implements CommandGroup {
                 .global(c -> Response.ok(true, List.of("hello " + c.arg(0))));
         // A manipulation: refused under another client's mount, journaled, undone with its list.
         table.command("ADD GREETING").args("ind").summary("asserts that the individual was greeted")
-                .manipulation(c -> c.change(List.of(new AddAxiom(c.reference().ontology(),
-                        c.factory().getOWLClassAssertionAxiom(greeted(c), c.individual(0))))));
+                .manipulation(c -> c.change(List.of(new AddAxiom(c.knowledge().ontology(),
+                        c.knowledge().factory().getOWLClassAssertionAxiom(greeted(c), c.individual(0))))));
         // A query: answered from what the reasoner infers, like the built-in ones.
         table.command("QUERY GREETING").summary("who was greeted, as the reasoner concludes")
-                .query(c -> c.ok(c.render().entities(Inferences.instances(c.reference(), greeted(c), false)
-                        .stream())));
+                .query(c -> c.ok(c.render(c.knowledge().instances(greeted(c), false).stream())));
     }
 
-    private static OWLClass greeted(CommandContext c) {
-        return c.factory().getOWLClass(c.reference().names().iri(org.semanticweb.owlapi.model.EntityType.CLASS,
-                "Greeted"));
+    private static OWLClass greeted(Context c) {
+        return c.knowledge().factory().getOWLClass(c.knowledge().iri(EntityType.CLASS, "Greeted"));
     }
 }

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.events.ChangeEvent;
@@ -105,7 +106,7 @@ class ChangeEventsTest {
         ArmorCore core = core(1000);
         ok(core, "LOAD FILE", ROBOTICS, "", "false", "HERMIT", "false");
         next();
-        ArmorCore.ListResponse good = core.executeList(List.of(
+        ListResponse good = core.executeList(List.of(
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot2", "Robot"),
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot3", "Robot"),
                 Directive.of("c", "map", "QUERY", "IND", "CLASS", "Robot")));
@@ -114,11 +115,11 @@ class ChangeEventsTest {
         assertEquals(1, list.revision());
         assertEquals(2, list.directives().size(), "the list's changes, not its queries");
 
-        ArmorCore.ListResponse bad = core.executeList(List.of(
+        ListResponse bad = core.executeList(List.of(
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot4", "Robot"),
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "broken")));
         assertFalse(bad.success());
-        ArmorCore.ListResponse created = core.executeList(List.of(
+        ListResponse created = core.executeList(List.of(
                 Directive.of("c", "other", "CREATE", "", "", "http://example.org/other", "false", "HERMIT", "false"),
                 Directive.of("c", "other", "ADD", "IND", "-", "thing"),
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot5", "Robot")));

@@ -6,6 +6,7 @@ import static io.github.armor.core.CoreFixture.iris;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
@@ -92,7 +93,7 @@ class ConcurrencyTest {
         ArmorCore core = core(300, 0, 0);
         assertTrue(run(core, "a", "map", "LOAD FILE", ROBOTICS, "", "false", BLOCKING, "true").success());
         BlockingReasonerFactory.BLOCK_MS.set(1_500);
-        CompletableFuture<ArmorCore.ListResponse> list = CompletableFuture.supplyAsync(() -> core.executeList(List.of(
+        CompletableFuture<ListResponse> list = CompletableFuture.supplyAsync(() -> core.executeList(List.of(
                 Directive.of("a", "map", "ADD", "IND", "CLASS", "robot2", "Robot"),
                 Directive.of("a", "map", "REASON", "", ""),
                 Directive.of("a", "map", "ADD", "IND", "CLASS", "robot3", "Robot"),
@@ -100,7 +101,7 @@ class ConcurrencyTest {
         Thread.sleep(300);
         Response intruder = run(core, "b", "map", "ADD IND CLASS", "intruder", "Robot");
         assertFails(intruder, 211);
-        ArmorCore.ListResponse answer = list.get(10, TimeUnit.SECONDS);
+        ListResponse answer = list.get(10, TimeUnit.SECONDS);
         assertEquals(List.of(212, 212, 212, 207), answer.responses().stream().map(Response::exitCode).toList());
         assertEquals(iris("robot1"), run(core, "b", "map", "QUERY IND CLASS", "Robot").queriedObjects());
     }

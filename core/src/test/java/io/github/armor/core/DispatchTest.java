@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
@@ -253,7 +254,7 @@ class DispatchTest {
     void aFailingListUndoesItsEarlierChanges() {
         CoreFixture f = fixture();
         f.loadRobotics("map", "HERMIT", false);
-        ArmorCore.ListResponse list = f.core.executeList(List.of(
+        ListResponse list = f.core.executeList(List.of(
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot2", "Robot"),
                 Directive.of("c", "map", "REMOVE", "IND", "CLASS", "robot1", "Robot"),
                 Directive.of("c", "map", "ADD", "DATAPROP", "IND", "batteryLevel", "robot2", "INT", "x"),
@@ -263,7 +264,7 @@ class DispatchTest {
         assertEquals(List.of(212, 212, 101, 212), list.responses().stream().map(Response::exitCode).toList());
         assertEquals(iris("robot1"), f.ok("map", "QUERY IND CLASS", "Robot").queriedObjects());
 
-        ArmorCore.ListResponse good = f.core.executeList(List.of(
+        ListResponse good = f.core.executeList(List.of(
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot2", "Robot"),
                 Directive.of("c", "map", "QUERY", "IND", "CLASS", "Robot")));
         assertTrue(good.success());

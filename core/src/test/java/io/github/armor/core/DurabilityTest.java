@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
 import java.nio.file.Files;
@@ -63,6 +64,33 @@ class DurabilityTest {
         // The preload of a restarted node names the same file: the restored reference is reused.
         ok(second, "c", "map", "LOAD FILE", ROBOTICS, "", "false", "PELLET", "true");
         assertEquals(iris("robot1", "robot2"), robots(second));
+    }
+
+    /**
+     * LUBM's univ-bench defines Dean by an owl:intersectionOf of one restriction, which functional
+     * syntax (the checkpoint's) writes as the restriction alone: the same class, kept (LOAD was 225).
+     */
+    @Test
+    void anIntersectionOfOneClassIsKeptAsThatClass() {
+        String department = LubmQueriesTest.LUBM.resolve("university0-department0.owl").toString();
+        java.util.function.Supplier<ArmorCore> restart = () -> {
+            cores.forEach(ArmorCore::close);
+            ArmorCore core = new ArmorCore(new io.github.armor.core.api.CoreConfig(true, "PELLET",
+                    List.of(LubmQueriesTest.LUBM), false, 30_000, 0, 0,
+                    new io.github.armor.core.api.CoreConfig.Durability(stateDir, true, true, 1000, 3600)));
+            core.restoreState();
+            cores.add(core);
+            return core;
+        };
+        ArmorCore first = restart.get();
+        ok(first, "c", "lubm", "LOAD FILE", department, "", "false", "PELLET", "false");
+        List<String> deans = ok(first, "c", "lubm", "QUERY IND CLASS", "Dean").queriedObjects();
+        List<String> chairs = ok(first, "c", "lubm", "QUERY IND CLASS", "Chair").queriedObjects();
+        assertTrue(!chairs.isEmpty(), "the department has a chair");
+
+        ArmorCore second = restart.get();
+        assertEquals(deans, ok(second, "c", "lubm", "QUERY IND CLASS", "Dean").queriedObjects());
+        assertEquals(chairs, ok(second, "c", "lubm", "QUERY IND CLASS", "Chair").queriedObjects());
     }
 
     /** Issue 35 item 9: a restored reference shows the time its reasoning took, not a no-op's 0.0 ms. */
@@ -127,11 +155,11 @@ class DurabilityTest {
     void aFailedListLeavesNothingInTheJournal() {
         ArmorCore first = core(true, 1000);
         ok(first, "c", "map", "LOAD FILE", ROBOTICS, "", "false", "HERMIT", "true");
-        ArmorCore.ListResponse list = first.executeList(List.of(
+        ListResponse list = first.executeList(List.of(
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot2", "Robot"),
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "broken")));
         assertFalse(list.success());
-        ArmorCore.ListResponse good = first.executeList(List.of(
+        ListResponse good = first.executeList(List.of(
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot3", "Robot"),
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot4", "Robot")));
         assertTrue(good.success());

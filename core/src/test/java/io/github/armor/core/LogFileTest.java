@@ -1,14 +1,9 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core;
 
-import static io.github.armor.core.CoreFixture.assertFails;
-import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertTrue;
-
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
-import io.github.armor.core.command.DirectiveLog;
+import io.github.armor.core.log.DirectiveLog;
 import java.io.ByteArrayOutputStream;
 import java.io.OutputStream;
 import java.io.PrintStream;
@@ -18,6 +13,11 @@ import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+
+import static io.github.armor.core.CoreFixture.assertFails;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * LOG FILE ON takes a regular file inside allowed_dirs, its final target checked (issue 20

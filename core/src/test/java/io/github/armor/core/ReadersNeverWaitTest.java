@@ -101,6 +101,36 @@ class ReadersNeverWaitTest {
     }
 
     /**
+     * The web view's pages read the published state, off the reference's lock (issue 28): a page
+     * refreshing while a writer holds the reference neither waits for it nor makes it wait.
+     */
+    @org.junit.jupiter.api.Test
+    void webViewsOfAHeldReferenceAnswerFromTheLastFinishedState() throws Exception {
+        assertTrue(run("map", "LOAD FILE", ROBOTICS, "", "false", "HERMIT", "false").success());
+        assertEquals(iris("kitchen"), run("map", "QUERY IND CLASS", "OccupiedRoom").queriedObjects());
+        io.github.armor.core.view.ReferenceViews views = core.views();
+        CompletableFuture<Response> writer = CompletableFuture.supplyAsync(() -> run("map", "TEST MOVE SLOWLY",
+                "isIn", "robot1", "bedroom", "kitchen"));
+        assertTrue(writerInside.await(10, TimeUnit.SECONDS));
+        // Each would answer 211 after the 300 ms lock wait if it took the reference's lock.
+        for (String request : List.of("{\"name\": \"overview\"}",
+                "{\"name\": \"individuals\", \"reference\": \"map\", \"search\": \"kitchen\"}",
+                "{\"name\": \"graph\", \"reference\": \"map\"}",
+                "{\"name\": \"classes\", \"reference\": \"map\"}")) {
+            com.google.gson.JsonObject answer = views.answer(com.google.gson.JsonParser.parseString(request)
+                    .getAsJsonObject());
+            assertFalse(answer.has("error"), () -> request + " waited for the writer: " + answer);
+        }
+        com.google.gson.JsonObject page = views.answer(com.google.gson.JsonParser.parseString(
+                "{\"name\": \"individuals\", \"reference\": \"map\", \"search\": \"kitchen\"}")
+                .getAsJsonObject());
+        assertTrue(page.toString().contains("OccupiedRoom"), "the kitchen as the last finished state has it: " + page);
+        assertFalse(writer.isDone());
+        letWriterGo.countDown();
+        assertTrue(writer.get(10, TimeUnit.SECONDS).success());
+    }
+
+    /**
      * A client reads its own writes. The writer holds the reference; on its thread (re-entering
      * the reference, as a directive run inside a held reference does) client "mover" adds two
      * robots, and that change is acknowledged. Readers' state is offered only when the outermost

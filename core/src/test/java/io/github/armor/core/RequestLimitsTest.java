@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
@@ -51,7 +52,7 @@ class RequestLimitsTest {
         assertFails(f.runAs("c".repeat(SizeLimits.NAME_BYTES + 1), "map", "ADD IND CLASS", "robot9", "Robot"), 221);
         List<Directive> tooMany = Collections.nCopies(SizeLimits.LIST_DIRECTIVES + 1,
                 Directive.of("c", "map", "ADD", "IND", "CLASS", "robot9", "Robot"));
-        ArmorCore.ListResponse list = f.core.executeList(tooMany);
+        ListResponse list = f.core.executeList(tooMany);
         assertFalse(list.success());
         assertEquals(tooMany.size(), list.responses().size());
         assertTrue(list.responses().stream().allMatch(r -> r.exitCode() == 221));

@@ -34,7 +34,8 @@ public enum ExitCode {
     UNKNOWN_NAME(224, "a query names an entity the reference does not know (node parameter strict_names)"),
     NOT_DURABLE(225, "not durable: the state directory did not take the change (disk full, I/O error,"
             + " read-only); nothing changed"),
-    CLIENT_LIMIT(226, "the client holds as many references or subscriptions as one client may");
+    CLIENT_LIMIT(226, "the client holds as many references or subscriptions as one client may"),
+    NOT_ENTAILED(227, "the fact to explain does not hold (or the reference is consistent): nothing to explain");
 
     private final int code;
     private final String meaning;

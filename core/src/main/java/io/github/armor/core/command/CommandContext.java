@@ -1,11 +1,15 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.command;
 
+import io.github.armor.core.answers.Literals;
+import io.github.armor.core.answers.Rendering;
+import io.github.armor.core.answers.Syntax;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
+import io.github.armor.core.log.DirectiveLog;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
 import java.util.ArrayList;
@@ -25,6 +29,7 @@ import org.semanticweb.owlapi.model.OWLOntologyChange;
 /** What a command handler sees: the directive, its reference (if any), the registry and the settings. */
 public final class CommandContext {
     private final Directive directive;
+    private final CommandKind kind;
     private final Reference reference;
     private final ReferenceRegistry references;
     private final CoreConfig config;
@@ -36,10 +41,11 @@ public final class CommandContext {
     private Supplier<Response> afterRelease;
     private final List<String> unknownNames = new ArrayList<>();
 
-    public CommandContext(Directive directive, Reference reference, ReferenceRegistry references,
+    public CommandContext(Directive directive, CommandKind kind, Reference reference, ReferenceRegistry references,
                           CoreConfig config, Rendering rendering, DirectiveLog log, boolean replaying,
                           CommandTable commands, Supplier<List<String>> stateDamage) {
         this.directive = directive;
+        this.kind = kind;
         this.reference = reference;
         this.references = references;
         this.config = config;
@@ -92,7 +98,7 @@ public final class CommandContext {
             response = withNote(response, "new to the reference: " + String.join(", ", unknownNames));
         }
         String unused = reference == null ? "" : reference.coverage().summary();
-        if (!unused.isEmpty() && directive.command().equalsIgnoreCase("QUERY")) {
+        if (!unused.isEmpty() && kind == CommandKind.QUERY) {
             response = withNote(response, "may be incomplete: " + unused);
         }
         return response;
@@ -179,7 +185,7 @@ public final class CommandContext {
     private void noteIfUnknown(OWLEntity entity, String written) {
         if (!reference.names().knows(entity)) {
             String unknown = reference.names().describeUnknown(entity.getEntityType(), written);
-            if (config.safeguards().strictNames() && directive.command().equalsIgnoreCase("QUERY")) {
+            if (config.safeguards().strictNames() && kind == CommandKind.QUERY) {
                 throw new ArmorException(ExitCode.UNKNOWN_NAME, "reference '" + reference.name()
                         + "' does not know the " + unknown + " (strict_names is on)");
             }

@@ -16,6 +16,10 @@ import java.util.List;
  *                            ARMOR read only the arguments it named, so old clients send
  *                            {@code ['']} to REASON or MOUNT as a dummy
  * @param origin              where it comes from: {@code "core"}, or the file name of the plugin jar
+ * @param whileBusy           what answers it while another directive holds its reference, in order
+ *                            (none: it waits for the reference)
+ * @param subscribedAs        the key a subscription to it asks instead (its answer as one line per
+ *                            item), or empty: itself
  */
 public record CommandSpec(
         String key,
@@ -27,7 +31,9 @@ public record CommandSpec(
         boolean emptySurplusIgnored,
         String summary,
         String origin,
-        Handler handler) {
+        Handler handler,
+        List<AnswerSource> whileBusy,
+        String subscribedAs) {
 
     @FunctionalInterface
     public interface Handler {
@@ -38,6 +44,7 @@ public record CommandSpec(
         aliases = List.copyOf(aliases);
         required = List.copyOf(required);
         optional = List.copyOf(optional);
+        whileBusy = List.copyOf(whileBusy);
     }
 
     public CommandKind.Target target() {

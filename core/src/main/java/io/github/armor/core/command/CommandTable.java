@@ -16,6 +16,7 @@ import java.util.Optional;
 import java.util.ServiceConfigurationError;
 import java.util.ServiceLoader;
 import java.util.TreeMap;
+import java.util.function.Consumer;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -45,27 +46,42 @@ public final class CommandTable {
      */
     public static CommandTable load(ClassLoader loader) {
         CommandTable table = new CommandTable(BUILT_IN);
-        Iterator<CommandGroup> groups = ServiceLoader.load(CommandGroup.class, loader).iterator();
+        // The core's own groups (and plugins written before the SPI), then plugins' SPI groups.
+        for (CommandGroup group : groups(CommandGroup.class, loader)) {
+            table.add(group, group::register);
+        }
+        for (io.github.armor.core.spi.CommandGroup group : groups(io.github.armor.core.spi.CommandGroup.class,
+                loader)) {
+            table.add(group, staged -> group.register(new PluginTable(staged)));
+        }
+        return table;
+    }
+
+    /** The groups of one service type the class loader finds; one that cannot be loaded is left out. */
+    private static <G> List<G> groups(Class<G> type, ClassLoader loader) {
+        List<G> found = new ArrayList<>();
+        Iterator<G> groups = ServiceLoader.load(type, loader).iterator();
         int errors = 0;
         while (errors < MAX_LOAD_ERRORS) {
-            CommandGroup group;
             try {
                 if (!groups.hasNext()) {
                     break;
                 }
-                group = groups.next();
+                found.add(groups.next());
             } catch (ServiceConfigurationError e) {
                 errors++;
                 LOG.error("a plugin's command group could not be loaded and is left out: {}", e.getMessage());
-                continue;
-            }
-            if (sameSource(group.getClass(), CommandTable.class)) {
-                group.register(table);
-            } else {
-                table.addPlugin(group, jarOf(group.getClass()));
             }
         }
-        return table;
+        return found;
+    }
+
+    private void add(Object group, Consumer<CommandTable> register) {
+        if (sameSource(group.getClass(), CommandTable.class)) {
+            register.accept(this);
+        } else {
+            addPlugin(group, register, jarOf(group.getClass()));
+        }
     }
 
     /** The table of the core's own jar (and its class path). */
@@ -73,10 +89,10 @@ public final class CommandTable {
         return load(CommandTable.class.getClassLoader());
     }
 
-    private void addPlugin(CommandGroup group, String jar) {
+    private void addPlugin(Object group, Consumer<CommandTable> register, String jar) {
         CommandTable staged = new CommandTable(jar);
         try {
-            group.register(staged);
+            register.accept(staged);
         } catch (VirtualMachineError e) {
             throw e;
         } catch (RuntimeException | Error e) {
@@ -163,6 +179,8 @@ public final class CommandTable {
         private boolean emptySurplusIgnored;
         private String summary = "";
         private Face face;
+        private final List<AnswerSource> whileBusy = new ArrayList<>();
+        private String subscribedAs = "";
 
         private Builder(String key) {
             this.key = key;
@@ -216,6 +234,21 @@ public final class CommandTable {
             return this;
         }
 
+        /**
+         * A way to answer it while another directive holds the reference (from the state its
+         * reasoner last published), tried before waiting; sources are asked in the order given.
+         */
+        public Builder whileBusy(AnswerSource source) {
+            whileBusy.add(source);
+            return this;
+        }
+
+        /** A subscription to it asks the command written {@code words} instead (same arguments). */
+        public Builder subscribedAs(String words) {
+            subscribedAs = normalise(words);
+            return this;
+        }
+
         /** A read: never mount-checked. */
         public void query(Handler handler) {
             register(CommandKind.QUERY, handler);
@@ -261,7 +294,9 @@ public final class CommandTable {
             boolean plugin = !origin.equals(BUILT_IN);
             CommandSpec spec = new CommandSpec(key, aliases, kind, required, optional, variadic,
                     emptySurplusIgnored, summary, origin,
-                    plugin ? PluginGuard.guard(key, origin, handler) : handler);
+                    plugin ? PluginGuard.guard(key, origin, handler) : handler,
+                    plugin ? whileBusy.stream().map(source -> PluginGuard.guard(key, origin, source)).toList()
+                            : whileBusy, subscribedAs);
             List<String> keys = new ArrayList<>(aliases);
             keys.add(0, key);
             for (String name : keys) {

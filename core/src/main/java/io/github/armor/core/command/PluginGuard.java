@@ -5,6 +5,7 @@ import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.command.CommandSpec.Handler;
+import java.util.Optional;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.FutureTask;
 import java.util.concurrent.TimeUnit;
@@ -41,16 +42,26 @@ final class PluginGuard {
 
     /** The handler a plugin registered, run under the guard. */
     static Handler guard(String key, String origin, Handler handler) {
-        return context -> run(key, origin, handler, context);
+        ClassLoader loader = handler instanceof PluginTable.Adapted adapted ? adapted.loader()
+                : handler.getClass().getClassLoader();
+        return context -> run(key, origin, handler, loader, context);
     }
 
-    private static Response run(String key, String origin, Handler handler, CommandContext context) {
+    /** An answer source a plugin registered, run under the guard (no answer: null inside it). */
+    static AnswerSource guard(String key, String origin, AnswerSource source) {
+        Handler asHandler = context -> source.answer(context).orElse(null);
+        return context -> Optional.ofNullable(run(key, origin, asHandler, source.getClass().getClassLoader(),
+                context));
+    }
+
+    private static Response run(String key, String origin, Handler handler, ClassLoader loader,
+                                CommandContext context) {
         long limitMs = context.config().safeguards().pluginTimeoutMs();
         FutureTask<Response> task = new FutureTask<>(() -> handler.run(context));
         Thread thread = new Thread(null, task, "armor-plugin-" + THREADS.incrementAndGet(), STACK_BYTES);
         thread.setDaemon(true);
         // A plugin looking up its own resources or services finds them through its jar's loader.
-        thread.setContextClassLoader(handler.getClass().getClassLoader());
+        thread.setContextClassLoader(loader);
         thread.start();
         try {
             return limitMs > 0 ? task.get(limitMs, TimeUnit.MILLISECONDS) : task.get();

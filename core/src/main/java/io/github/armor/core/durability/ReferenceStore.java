@@ -74,6 +74,8 @@ final class ReferenceStore {
     private int recordsSinceCheckpoint;
     private long lastCheckpointNanos = System.nanoTime();
     private boolean checkpointInFlight;
+    // The digest of the class hierarchy last written beside the checkpoint (HierarchySidecar).
+    private String hierarchyDigest;
 
     @FunctionalInterface
     interface Repair {
@@ -133,6 +135,7 @@ final class ReferenceStore {
         store.highestSeq = 1;
         store.checkpoint = CheckpointFile.write(storage, CheckpointFile.snapshot(reference), dir, 1,
                 reference.revision());
+        store.keepHierarchy(reference, Runnable::run);
         store.journal = Journal.openForAppend(storage, store.journalFile(1), durability.fsync());
         store.journalSeqs.add(1L);
         store.mountedAtCheckpoint = reference.mountedBy();
@@ -151,6 +154,7 @@ final class ReferenceStore {
             throws IOException {
         List<String> problems = new ArrayList<>();
         JsonObject meta = readMeta(storage, dir, problems);
+        HierarchySidecar.read(storage, dir);
         ReferenceStore store = new ReferenceStore(storage, dir, meta.get("name").getAsString(), durability);
         store.readFields(meta);
         store.highestSeq = highestSeqIn(dir);
@@ -445,6 +449,7 @@ final class ReferenceStore {
      * must have no buffered changes waiting (a checkpoint holds applied changes only).
      */
     void maybeCheckpoint(Reference reference, Executor background) {
+        keepHierarchy(reference, background);
         long ageS = (System.nanoTime() - lastCheckpointNanos) / 1_000_000_000L;
         synchronized (this) {
             boolean due = recordsSinceCheckpoint >= durability.checkpointEveryChanges()
@@ -471,6 +476,20 @@ final class ReferenceStore {
                 checkpointInFlight = false;
             }
         }
+    }
+
+    /**
+     * Writes the class hierarchy of a reference over an upper ontology beside the checkpoint when
+     * it has one not written yet (a standalone ontology classifies in less time than reading it back).
+     */
+    private void keepHierarchy(Reference reference, Executor background) {
+        io.github.armor.core.reasoning.ClassifiedSchema hierarchy = HierarchySidecar.of(reference);
+        if (hierarchy == null || hierarchy.digest().equals(hierarchyDigest)
+                || !io.github.armor.core.reasoning.RealisationScope.overUpperOntology(reference.ontology())) {
+            return;
+        }
+        hierarchyDigest = hierarchy.digest();
+        background.execute(() -> HierarchySidecar.write(dir, hierarchy, this::writeDurably));
     }
 
     /** Opens the next journal and names it in meta; when either fails the current one stays in use. */

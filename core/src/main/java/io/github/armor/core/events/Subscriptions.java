@@ -75,6 +75,11 @@ public final class Subscriptions implements AutoCloseable {
          * Either revision may be {@link #ANY_REVISION}. Failures are answered, never thrown.
          */
         Evaluation evaluate(Directive query, long unlessRevision, long expectRevision);
+
+        /** The directive a subscription to {@code query} asks (a command may name another for that). */
+        default Directive standingForm(Directive query) {
+            return query;
+        }
     }
 
     private final EventFeed feed;
@@ -107,13 +112,12 @@ public final class Subscriptions implements AutoCloseable {
      * since it. A query that fails registers nothing.
      *
      * @param id    the subscription's id, chosen by the client
-     * @param query the query directive (QUERY SPARQL FORMATTED is asked unformatted: one row a line)
+     * @param query the query directive (asked in its {@linkplain Evaluator#standingForm standing form})
      * @param known the answer the client last had, or null for a new subscription
      * @return the first evaluation; its response says whether the subscription was registered
      */
     public Evaluation subscribe(String id, Directive query, List<String> known) {
-        Directive asked = query.key().equals("QUERY SPARQL FORMATTED") ? new Directive(query.clientName(),
-                query.referenceName(), query.command(), query.primarySpec(), "", query.args()) : query;
+        Directive asked = evaluator.standingForm(query);
         Subscription subscription = new Subscription(id, asked, known);
         Watch watch;
         synchronized (this) {

@@ -88,8 +88,11 @@ import org.semanticweb.owlapi.model.OWLSubPropertyChainOfAxiom;
  * individuals (SOMA's execution states) thus leaves an ABox that never uses those classes alone; a
  * hasValue class over an individual of the ABox ties only what is linked to that individual.
  *
- * <p>Not covered (the ontology is then reasoned on whole and {@link #obstacle()} says why): SWRL
- * rules, keys over data properties, the universal property, anonymous individuals in the schema,
+ * <p>SWRL rules are not read here: {@link RuleProgram} evaluates them beside the modules, or
+ * sends the ontology to a reasoner on the whole of it, saying why.
+ *
+ * <p>Not covered (the ontology is then reasoned on whole and {@link #obstacle()} says why): keys
+ * over data properties, the universal property, anonymous individuals in the schema,
  * and nominals whose classes the ABox's signature reaches.
  */
 final class AboxLinks {
@@ -184,7 +187,8 @@ final class AboxLinks {
                 return null;
             }
             if (axiom.isOfType(AxiomType.SWRL_RULE)) {
-                return "SWRL rules";
+                // Rules are evaluated beside the modules (RuleProgram says when they can be).
+                return null;
             }
             if (axiom.anonymousIndividuals().findAny().isPresent()) {
                 return "anonymous individuals in the schema";

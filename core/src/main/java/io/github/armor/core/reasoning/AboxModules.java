@@ -116,6 +116,11 @@ final class AboxModules {
         return new Repartition(made, dropped, gone);
     }
 
+    /** The module an individual is in, or null when it is in none (not in the ontology). */
+    Module of(OWLIndividual individual) {
+        return moduleOf.get(individual);
+    }
+
     void markInconsistent(Module module) {
         module.consistent = false;
         inconsistent.add(module);
@@ -197,6 +202,11 @@ final class AboxModules {
 
     private Module grow(OWLIndividual seed) {
         return grow(seed, new ArrayList<>());
+    }
+
+    /** The module the individual is in, or null when it is not in the ontology. */
+    Module moduleOf(OWLIndividual individual) {
+        return moduleOf.get(individual);
     }
 
     /** How many modules there are. */

@@ -35,20 +35,26 @@ public final class InferredState {
     private final int individuals;
     private final boolean consistent;
     private final Set<OWLClass> classes;
+    private final RealisationScope scope;
 
     private InferredState(Numbering numbering, Slot[][] chunks, int size, int individuals, boolean consistent,
-                          Set<OWLClass> classes) {
+                          Set<OWLClass> classes, RealisationScope scope) {
         this.numbering = numbering;
         this.chunks = chunks;
         this.size = size;
         this.individuals = individuals;
         this.consistent = consistent;
         this.classes = classes;
+        this.scope = scope;
     }
 
-    /** A state with no individual, to be filled through {@link #edit()}. */
+    /** A state with no individual, to be filled through {@link #edit()}; null scope: every class is realised. */
+    static InferredState empty(RealisationScope scope) {
+        return new InferredState(new Numbering(), new Slot[0][], 0, 0, true, Set.of(), scope);
+    }
+
     static InferredState empty() {
-        return new InferredState(new Numbering(), new Slot[0][], 0, 0, true, Set.of());
+        return empty(null);
     }
 
     /** Whether the ontology was consistent: when not, no type is known. */
@@ -61,9 +67,22 @@ public final class InferredState {
         return individuals;
     }
 
-    /** Whether the class was in the ontology's signature (built-in classes always are). */
+    /**
+     * Whether the class was in the ontology's signature and its instances are known (built-in
+     * classes always are; over an upper ontology, only the classes realised: {@link RealisationScope}).
+     */
     public boolean knows(OWLClass owlClass) {
+        return owlClass.isBuiltIn() || classes.contains(owlClass) && (scope == null || scope.answers(owlClass));
+    }
+
+    /** Whether the class is in the ontology's signature, its instances known or not. */
+    boolean inSignature(OWLClass owlClass) {
         return owlClass.isBuiltIn() || classes.contains(owlClass);
+    }
+
+    /** The classes realised with every change (every class when null). */
+    RealisationScope scope() {
+        return scope;
     }
 
     /** Whether the individual was in the ontology's signature. */
@@ -104,11 +123,41 @@ public final class InferredState {
         return found;
     }
 
-    /** The classes of an individual, for a reader that has no reasoner (empty: unknown individual). */
+    /** The named individuals the state knows. */
+    List<OWLNamedIndividual> individualsList() {
+        List<OWLNamedIndividual> found = new ArrayList<>(individuals);
+        for (Slot[] chunk : chunks) {
+            if (chunk != null) {
+                for (Slot slot : chunk) {
+                    if (slot != null) {
+                        found.add(slot.individual());
+                    }
+                }
+            }
+        }
+        return found;
+    }
+
+    /**
+     * The classes of an individual, for a reader that has no reasoner (empty: unknown individual,
+     * or only some of its classes are known: {@link #realisedClassesOf}).
+     */
     public Optional<Set<OWLClass>> classesOf(OWLNamedIndividual individual, boolean direct) {
-        return types(individual).map(profile -> {
+        return types(individual).filter(TypeProfile::complete).map(profile -> {
             Set<OWLClass> flat = new java.util.HashSet<>();
             (direct ? profile.direct() : profile.all()).forEach(flat::addAll);
+            return flat;
+        });
+    }
+
+    /**
+     * What is known of an individual's classes without reasoning again: all of them, or over an
+     * upper ontology those of the realised classes it belongs to (empty: unknown individual).
+     */
+    public Optional<Set<OWLClass>> realisedClassesOf(OWLNamedIndividual individual) {
+        return types(individual).map(profile -> {
+            Set<OWLClass> flat = new java.util.HashSet<>();
+            profile.all().forEach(flat::addAll);
             return flat;
         });
     }
@@ -198,7 +247,8 @@ public final class InferredState {
         }
 
         InferredState done() {
-            return new InferredState(base.numbering, chunks, base.numbering.next, individuals, consistent, classes);
+            return new InferredState(base.numbering, chunks, base.numbering.next, individuals, consistent, classes,
+                    base.scope);
         }
 
         private Slot[] writableChunk(int number) {

@@ -5,10 +5,13 @@ import io.github.armor.core.reasoning.AboxModules.Module;
 import io.github.armor.core.reasoning.AboxModules.Repartition;
 import io.github.armor.core.reasoning.ModuleRealiser.Realised;
 import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
@@ -27,6 +30,7 @@ import org.semanticweb.owlapi.model.OWLObjectPropertyExpression;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
 import org.semanticweb.owlapi.model.OWLOntologyChangeListener;
+import org.semanticweb.owlapi.model.SWRLRule;
 import org.semanticweb.owlapi.model.parameters.Imports;
 import org.semanticweb.owlapi.reasoner.BufferingMode;
 import org.semanticweb.owlapi.reasoner.FreshEntityPolicy;
@@ -93,12 +97,29 @@ public final class ModularReasoner implements OWLReasoner {
     private AboxModules modules;
     private ModuleRealiser realiser;
     private boolean schemaConsistent;
+    // With SWRL rules: the engine, the types without its conclusions (what rules read), and the
+    // modules inconsistent once the conclusions are added. Without rules the base state is the state.
+    private RuleEngine rules;
+    private InferredState baseState;
+    private final Set<Module> inconsistentWithConclusions =
+            java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
     private volatile InferredState state;
     private Set<OWLOntology> closure;
 
     private OWLReasoner whole;
     private boolean wholeBehind;
     private boolean wholeMissedRemoval;
+
+    // The schema's class hierarchy, classified once and kept while the schema stays the same.
+    private volatile Classifications.Job classification;
+    private volatile boolean hierarchyCovers;
+    private volatile boolean classifiedHere;
+    private volatile boolean stopWaiting;
+    // The classes realised with every change, and those clients asked about (RealisationScope).
+    private RealisationScope scope;
+    private final Set<OWLClass> asked = new HashSet<>();
+    // Over an upper ontology: every type of one module, found when asked.
+    private ModuleRealiser everyType;
 
     /** Whether ARMOR reasons on modules with this reasoner (a complete one, known by name). */
     public static boolean handles(String reasonerName) {
@@ -156,6 +177,26 @@ public final class ModularReasoner implements OWLReasoner {
     }
 
     /**
+     * The schema's kept class hierarchy (classified once per schema), or null before the first
+     * reasoning and when the schema is inconsistent. Safe to read from any thread.
+     */
+    public ClassifiedSchema classifiedSchema() {
+        Classifications.Job job = classification;
+        return job == null || !hierarchyCovers ? null : job.now();
+    }
+
+    /** Since when the schema's classification runs in the background (System.nanoTime), or -1 when it does not. */
+    public long classifyingSince() {
+        Classifications.Job job = classification;
+        return job != null && job.running() ? job.startedNanos : -1;
+    }
+
+    /** Whether the kept hierarchy was classified here, not taken from an earlier classification of the schema. */
+    public boolean classifiedHere() {
+        return classifiedHere;
+    }
+
+    /**
      * The types as of the last flush, for readers on other threads; null until the first
      * reasoning, and whenever the ontology is reasoned on as a whole.
      */
@@ -177,7 +218,10 @@ public final class ModularReasoner implements OWLReasoner {
         List<OWLOntologyChange> changes = List.copyOf(pending);
         pending.clear();
         switch (mode) {
-            case WHOLE -> whole.flush();
+            case WHOLE -> {
+                keepHierarchyUpToDate(changes);
+                whole.flush();
+            }
             case NOT_REASONED -> reasonOnModules();
             case MODULAR -> {
                 wholeBehind = true;
@@ -190,27 +234,61 @@ public final class ModularReasoner implements OWLReasoner {
     private void reasonOnModules() {
         pending.clear();
         closure = ontology.importsClosure().collect(Collectors.toSet());
+        scope = RealisationScope.of(ontology, asked);
+        classify();
         AboxLinks found = AboxLinks.of(linkShapingAxioms());
         if (found.obstacle().isPresent()) {
             reasonOnWhole(found.obstacle().get());
             return;
         }
+        RuleEngine engine = null;
+        List<SWRLRule> swrl = ontology.axioms(AxiomType.SWRL_RULE, Imports.INCLUDED).toList();
+        if (!swrl.isEmpty()) {
+            if (underlyingName.equalsIgnoreCase("JFACT")) {
+                reasonOnWhole("SWRL rules (JFact does not evaluate them; PELLET and HERMIT references do)");
+                return;
+            }
+            RuleProgram.Compiled compiled = RuleProgram.compile(logicalSchemaAxioms().toList(), swrl,
+                    Stream.concat(ontology.axioms(AxiomType.SAME_INDIVIDUAL, Imports.INCLUDED),
+                            ontology.axioms(AxiomType.CLASS_ASSERTION, Imports.INCLUDED)
+                                    .filter(AboxLinks::shapesLinks)).map(OWLAxiom.class::cast).toList(), found);
+            if (compiled.obstacle() != null) {
+                reasonOnWhole(compiled.obstacle());
+                return;
+            }
+            engine = new RuleEngine(compiled.program(), ontology.getOWLOntologyManager().getOWLDataFactory());
+        }
+        RuleEngine ruleEngine = engine;
         mode = Mode.MODULAR;
         wholeBehind = true;
         guarded(() -> {
             long start = System.nanoTime();
+            rules = ruleEngine;
+            inconsistentWithConclusions.clear();
             links = found;
-            realiser = new ModuleRealiser(factory, configuration, schemaAxioms());
+            List<OWLAxiom> schema = schemaAxioms();
+            realiser = new ModuleRealiser(factory, configuration, schema,
+                    scope.everyClass() ? null : scope.tracked(), !scope.everyClass());
+            everyType = scope.everyClass() ? null : new ModuleRealiser(factory, configuration, schema, null, true);
             modules = new AboxModules(ontology, links);
             List<Module> all = modules.partitionAll();
             if (!nominalsIndependent()) {
                 return;
             }
-            schemaConsistent = realiser.schemaConsistent();
-            InferredState.Editor next = InferredState.empty().edit()
+            ClassifiedSchema kept = classification.now();
+            schemaConsistent = kept != null ? kept.consistent() : realiser.schemaConsistent();
+            InferredState.Editor next = InferredState.empty(scope).edit()
                     .classes(ontology.classesInSignature(Imports.INCLUDED).collect(Collectors.toSet()));
             record(all, schemaConsistent ? realiser.realise(all, modules::axiomsOf) : List.of(), next);
-            state = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+            baseState = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+            state = baseState;
+            if (rules != null) {
+                InferredState base = baseState;
+                rules.load(ontology, owlClass -> base.instances(owlClass));
+                if (!withConclusions(base.individualsList(), List.of())) {
+                    return;
+                }
+            }
             lastUpdate = new LastUpdate(true, state.individuals(), state.individuals(), modules.count());
             plan = ReasoningPlan.modules(all.size(), all.stream().mapToInt(m -> m.members.size()).max().orElse(0),
                     all.stream().filter(m -> m.hub).mapToInt(m -> m.members.size()).sum());
@@ -226,6 +304,8 @@ public final class ModularReasoner implements OWLReasoner {
         Set<OWLClass> classes = new HashSet<>();
         boolean schemaChanged = false;
         boolean linksMayChange = false;
+        List<OWLAxiom> added = new ArrayList<>();
+        List<OWLAxiom> removed = new ArrayList<>();
         for (OWLOntologyChange change : changes) {
             if (change.isImportChange()) {
                 schemaChanged = true;
@@ -236,8 +316,14 @@ public final class ModularReasoner implements OWLReasoner {
             OWLAxiom axiom = change.getAxiom();
             axiom.classesInSignature().forEach(classes::add);
             if (axiom.isOfType(AxiomType.ABoxAxiomTypes)) {
+                hierarchyCovers &= !ClassifiedSchema.escapes(classification.input, axiom);
                 AboxLinks.individualsOf(axiom).forEach(touched::add);
                 linksMayChange |= AboxLinks.shapesLinks(axiom);
+                // With rules: sameness can make the schema unfit for them, and a rule may read difference.
+                schemaChanged |= rules != null && (axiom.isOfType(AxiomType.SAME_INDIVIDUAL)
+                        || AboxLinks.shapesLinks(axiom)
+                        || rules.readsDifference() && axiom.isOfType(AxiomType.DIFFERENT_INDIVIDUALS));
+                (change.isAddAxiom() ? added : removed).add(axiom);
             } else if (axiom instanceof OWLDeclarationAxiom declaration) {
                 if (declaration.getEntity().isOWLNamedIndividual()) {
                     touched.add(declaration.getEntity().asOWLNamedIndividual());
@@ -259,7 +345,7 @@ public final class ModularReasoner implements OWLReasoner {
         if (nominalIndependence != null && !coveredByNominalCheck(repartition.made()) && !nominalsIndependent()) {
             return;
         }
-        InferredState.Editor next = state.edit();
+        InferredState.Editor next = baseState.edit();
         repartition.gone().stream().filter(OWLIndividual::isNamed)
                 .forEach(gone -> next.remove(gone.asOWLNamedIndividual()));
         record(repartition.made(), schemaConsistent
@@ -273,13 +359,112 @@ public final class ModularReasoner implements OWLReasoner {
         if (signatureChanged) {
             next.classes(signature);
         }
-        state = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+        baseState = next.consistent(schemaConsistent && !modules.anyInconsistent()).done();
+        if (rules == null) {
+            state = baseState;
+        } else if (!withRules(added, removed, repartition)) {
+            return;
+        }
         lastUpdate = new LastUpdate(false, repartition.made().stream().mapToInt(m -> m.members.size()).sum(),
                 state.individuals(), modules.count());
         ReasoningPlan before = plan;
         plan = ReasoningPlan.modules(modules.count(), Math.max(before.largest(), repartition.made().stream()
                 .mapToInt(m -> m.members.size()).max().orElse(0)), repartition.made().stream().filter(m -> m.hub)
                 .mapToInt(m -> m.members.size()).findAny().orElse(before.hub()));
+    }
+
+    /**
+     * The rules after an ABox change: the engine takes the asserted edges and values that came
+     * and went and the new body-class types of the remade modules' members; the modules whose
+     * conclusions changed are reasoned on again with them. False when the ontology went whole.
+     */
+    private boolean withRules(List<OWLAxiom> added, List<OWLAxiom> removed, Repartition repartition) {
+        Map<OWLNamedIndividual, Set<OWLClass>> retyped = new HashMap<>();
+        for (Module module : repartition.made()) {
+            module.namedMembers().forEach(member -> retyped.put(member, bodyClassesOf(member)));
+        }
+        repartition.gone().stream().filter(OWLIndividual::isNamed)
+                .forEach(gone -> retyped.put(gone.asOWLNamedIndividual(), Set.of()));
+        Set<RuleEngine.Fact> changed = rules.update(added, removed, retyped);
+        Set<OWLNamedIndividual> affected = new LinkedHashSet<>(retyped.keySet());
+        for (RuleEngine.Fact fact : changed) {
+            affected.add(fact.subject());
+            if (fact.object() instanceof OWLNamedIndividual object) {
+                affected.add(object);
+            }
+        }
+        return withConclusions(affected, repartition.dropped());
+    }
+
+    private Set<OWLClass> bodyClassesOf(OWLNamedIndividual individual) {
+        Set<OWLClass> classes = new HashSet<>();
+        baseState.types(individual).ifPresent(profile -> {
+            for (OWLClass owlClass : rules.bodyClasses()) {
+                if (profile.has(owlClass, false)) {
+                    classes.add(owlClass);
+                }
+            }
+        });
+        return classes;
+    }
+
+    /**
+     * The state with the rules' conclusions: the modules of the affected individuals take their
+     * types without conclusions, or, when the rules concluded something about a member, are
+     * reasoned on with those conclusions. A conclusion must not change a type a rule reads
+     * ({@link RuleProgram}, why rules read the types without conclusions); if one does, or the
+     * engine met a pair it cannot decide, the whole ontology is reasoned on. False then.
+     */
+    private boolean withConclusions(Collection<OWLNamedIndividual> affected, List<Module> dropped) {
+        if (rules.obstacle() != null) {
+            reasonOnWhole(rules.obstacle());
+            return false;
+        }
+        dropped.forEach(inconsistentWithConclusions::remove);
+        InferredState.Editor next = state.edit().classes(baseState.edit().classes());
+        Set<Module> seen = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
+        List<Module> withConclusions = new ArrayList<>();
+        for (OWLNamedIndividual individual : affected) {
+            Module module = modules.moduleOf(individual);
+            if (module == null) {
+                next.remove(individual);
+                continue;
+            }
+            if (!seen.add(module)) {
+                continue;
+            }
+            inconsistentWithConclusions.remove(module);
+            if (schemaConsistent && module.consistent && module.namedMembers().anyMatch(rules::concludedAbout)) {
+                withConclusions.add(module);
+            } else {
+                module.namedMembers().forEach(member -> next.put(member, baseState.types(member).orElse(null)));
+            }
+        }
+        for (Realised outcome : realiser.realise(withConclusions, module -> {
+            Set<OWLAxiom> axioms = new LinkedHashSet<>(modules.axiomsOf(module));
+            module.namedMembers().forEach(member -> axioms.addAll(rules.conclusionsAbout(member, module.members)));
+            return axioms;
+        })) {
+            if (!outcome.consistent()) {
+                inconsistentWithConclusions.add(outcome.module());
+                outcome.module().namedMembers().forEach(member -> next.put(member, null));
+                continue;
+            }
+            for (Map.Entry<OWLNamedIndividual, TypeProfile> entry : outcome.types().entrySet()) {
+                Set<OWLClass> before = bodyClassesOf(entry.getKey());
+                for (OWLClass owlClass : rules.bodyClasses()) {
+                    if (entry.getValue().has(owlClass, false) && !before.contains(owlClass)) {
+                        reasonOnWhole("a SWRL rule's conclusion makes " + entry.getKey().getIRI().getShortForm()
+                                + " a " + owlClass.getIRI().getShortForm() + ", which a rule reads (rules that"
+                                + " chain through classes)");
+                        return false;
+                    }
+                }
+                next.put(entry.getKey(), entry.getValue());
+            }
+        }
+        state = next.consistent(baseState.consistent() && inconsistentWithConclusions.isEmpty()).done();
+        return true;
     }
 
     /**
@@ -296,7 +481,9 @@ public final class ModularReasoner implements OWLReasoner {
             reasonOnWhole("individuals named in the schema (JFact answers them differently in modules)");
             return false;
         }
-        NominalIndependence found = NominalIndependence.check(ontology.getOWLOntologyManager(),
+        // A scratch manager: the extractor makes an ontology in it, which the reference's would keep (and refuse twice).
+        NominalIndependence found = NominalIndependence.check(
+                org.semanticweb.owlapi.apibinding.OWLManager.createOWLOntologyManager(),
                 logicalSchemaAxioms().toList(), modules.signatureOutsideHub());
         if (found.dependent().isPresent()) {
             reasonOnWhole("individuals named in the schema that the ABox can reach (" + found.dependent().get() + ")");
@@ -352,6 +539,8 @@ public final class ModularReasoner implements OWLReasoner {
         plan = ReasoningPlan.whole(because);
         nominalIndependence = null;
         links = null;
+        rules = null;
+        baseState = null;
         modules = null;
         realiser = null;
         state = null;
@@ -363,6 +552,91 @@ public final class ModularReasoner implements OWLReasoner {
         wholeMissedRemoval = false;
     }
 
+    /**
+     * The schema's class hierarchy: the one kept for this schema (classified earlier, or read from
+     * the checkpoint's sidecar), else classified by a reasoner of the underlying kind on the
+     * schema alone ({@link ClassifiedSchema}): at once for an ontology that stands alone, in the
+     * background over an upper ontology ({@link Classifications}), where class questions wait for it.
+     */
+    private void classify() {
+        ClassifiedSchema.Input input = ClassifiedSchema.inputOf(ontology, underlyingName);
+        Classifications.Job previous = classification;
+        if (previous == null || !previous.input.digest().equals(input.digest())) {
+            Classifications.Job job = Classifications.of(input, factory, configuration);
+            classifiedHere = job.running();
+            classification = job;
+            Classifications.release(previous);
+        }
+        hierarchyCovers = ClassifiedSchema.covers(input, ontology.axioms(Imports.INCLUDED)
+                .filter(axiom -> axiom.isOfType(AxiomType.ABoxAxiomTypes)));
+        if (scope.everyClass()) {
+            awaitClassification();
+        }
+    }
+
+    /** The classification, waited for while it runs (a time limit stops the wait, not the classification). */
+    private ClassifiedSchema awaitClassification() {
+        stopWaiting = false;
+        ClassifiedSchema done = classification.await(() -> stopWaiting);
+        if (done != null && classifiedHere) {
+            LOG.info("{}: {} classes classified with {} in {} ms", ontology.getOntologyID().getOntologyIRI()
+                    .map(Object::toString).orElse("(anonymous ontology)"), done.classCount(), underlyingName,
+                    done.classificationNanos() / 1_000_000);
+        }
+        return done;
+    }
+
+    /** On the whole ontology: a schema change classifies again, an assertion may leave the kept hierarchy. */
+    private void keepHierarchyUpToDate(List<OWLOntologyChange> changes) {
+        boolean schemaChanged = false;
+        for (OWLOntologyChange change : changes) {
+            if (change.isImportChange() || change.isAxiomChange() && change.getAxiom().isLogicalAxiom()
+                    && !change.getAxiom().isOfType(AxiomType.ABoxAxiomTypes)) {
+                schemaChanged = true;
+            } else if (change.isAxiomChange()) {
+                hierarchyCovers &= !ClassifiedSchema.escapes(classification.input, change.getAxiom());
+            }
+        }
+        if (schemaChanged) {
+            classify();
+        }
+    }
+
+    /**
+     * The kept hierarchy, when it is the whole ontology's: the schema is consistent, so is the
+     * ontology, and the ABox cannot add to the hierarchy ({@link ClassifiedSchema#covers}).
+     */
+    private ClassifiedSchema hierarchy() {
+        if (underlyingName.equalsIgnoreCase("JFACT")) {
+            // JFact's kept hierarchy missed an equivalence a schema change made (MAKE EQUIVALENT
+            // CLASS: test_contract_manipulations); its own reasoner answers class questions.
+            return null;
+        }
+        InferredState now = current();
+        ClassifiedSchema kept = hierarchyCovers ? awaitClassification() : null;
+        if (kept == null || !kept.consistent()) {
+            return null;
+        }
+        boolean consistent = now != null ? now.consistent() : whole().isConsistent();
+        return consistent ? kept : null;
+    }
+
+    /**
+     * Every type of the members of an individual's module, over an upper ontology where the
+     * modules are realised against some classes only: found now, kept until a change touches the module.
+     */
+    private TypeProfile everyTypeOf(OWLNamedIndividual individual, TypeProfile known) {
+        Module module = modules.of(individual);
+        if (module == null || everyType == null) {
+            return known;
+        }
+        everyType.prepare();
+        InferredState.Editor next = state.edit();
+        record(List.of(module), everyType.realise(List.of(module), modules::axiomsOf), next);
+        state = next.done();
+        return state.types(individual).orElseThrow(InconsistentOntologyException::new);
+    }
+
     /** Schema axioms and ABox axioms that can make properties link (see {@link AboxLinks#shapesLinks}). */
     private Stream<OWLAxiom> linkShapingAxioms() {
         return Stream.concat(logicalSchemaAxioms(),
@@ -371,10 +645,11 @@ public final class ModularReasoner implements OWLReasoner {
                         .filter(AboxLinks::shapesLinks));
     }
 
-    /** The logical axioms that are not assertions, through the index by kind (not every assertion). */
+    /** The logical axioms that are neither assertions nor rules, through the index by kind (not every assertion). */
     private Stream<OWLAxiom> logicalSchemaAxioms() {
         return AxiomType.AXIOM_TYPES.stream()
-                .filter(type -> type.isLogical() && !AxiomType.ABoxAxiomTypes.contains(type))
+                .filter(type -> type.isLogical() && !AxiomType.ABoxAxiomTypes.contains(type)
+                        && type != AxiomType.SWRL_RULE)
                 .flatMap(type -> ontology.axioms(type, Imports.INCLUDED).map(OWLAxiom.class::cast));
     }
 
@@ -449,11 +724,49 @@ public final class ModularReasoner implements OWLReasoner {
     @Override
     public NodeSet<OWLClass> getTypes(OWLNamedIndividual individual, boolean direct) {
         InferredState now = consistentState();
-        // Direct types need the whole ontology's class hierarchy: the hub's assertions can add to it.
-        if (now != null && now.knows(individual) && !(direct && !links.nominals().isEmpty())) {
-            return now.types(individual).orElseThrow(InconsistentOntologyException::new).nodeSet(direct);
+        if (now != null && now.knows(individual)) {
+            TypeProfile profile = now.types(individual).orElseThrow(InconsistentOntologyException::new);
+            if (!profile.complete()) {
+                profile = everyTypeOf(individual, profile);
+            }
+            // Direct types need the whole ontology's class hierarchy: the hub's assertions can add to it.
+            if (!direct || links.nominals().isEmpty()) {
+                return profile.nodeSet(direct);
+            }
+            // Over an upper ontology, a module outside the hub was realised on the schema part its
+            // assertions use, which the nominals cannot reach (NominalIndependence): its classes' order is the whole's.
+            Module module = modules.of(individual);
+            if (!scope.everyClass() && module != null && !module.hub) {
+                return profile.nodeSet(true);
+            }
+            ClassifiedSchema kept = hierarchy();
+            if (kept != null) {
+                return kept.mostSpecific(profile.nodeSet(false));
+            }
         }
         return whole().getTypes(individual, direct);
+    }
+
+    /**
+     * Realises the modules against all of {@code classes} at once, where they are not yet (over an
+     * upper ontology): for a caller about to ask the instances of many classes (SPARQL's inferred
+     * graph), which would otherwise realise the modules once per class.
+     */
+    public void realiseAgainst(java.util.Collection<OWLClass> classes) {
+        InferredState now = current();
+        if (now == null) {
+            return;
+        }
+        boolean more = false;
+        for (OWLClass owlClass : classes) {
+            if (!now.knows(owlClass) && now.inSignature(owlClass)) {
+                more |= asked.add(owlClass);
+            }
+        }
+        if (more) {
+            mode = Mode.NOT_REASONED;
+            current();
+        }
     }
 
     @Override
@@ -461,6 +774,15 @@ public final class ModularReasoner implements OWLReasoner {
         InferredState now = consistentState();
         if (now == null || expression.isAnonymous() || direct) {
             return whole().getInstances(expression, direct);
+        }
+        if (!now.knows(expression.asOWLClass()) && now.inSignature(expression.asOWLClass())) {
+            // A class not realised yet (over an upper ontology): from now on it is, with every change.
+            asked.add(expression.asOWLClass());
+            mode = Mode.NOT_REASONED;
+            now = consistentState();
+            if (now == null) {
+                return whole().getInstances(expression, false);
+            }
         }
         OWLNamedIndividualNodeSet instances = new OWLNamedIndividualNodeSet();
         for (OWLNamedIndividual individual : now.instances(expression.asOWLClass())) {
@@ -475,6 +797,11 @@ public final class ModularReasoner implements OWLReasoner {
         if (current != null) {
             current.interrupt();
         }
+        ModuleRealiser types = everyType;
+        if (types != null) {
+            types.interrupt();
+        }
+        stopWaiting = true;
         OWLReasoner wholeNow = whole;
         if (wholeNow != null) {
             wholeNow.interrupt();
@@ -484,7 +811,14 @@ public final class ModularReasoner implements OWLReasoner {
     @Override
     public void precomputeInferences(InferenceType... inferenceTypes) {
         if (current() == null) {
-            whole().precomputeInferences(inferenceTypes);
+            for (InferenceType type : inferenceTypes) {
+                // The kept hierarchy is the class hierarchy; over an upper ontology, types are found per question.
+                boolean kept = type == InferenceType.CLASS_HIERARCHY && hierarchy() != null
+                        || type == InferenceType.CLASS_ASSERTIONS && !scope.everyClass();
+                if (!kept) {
+                    whole().precomputeInferences(type);
+                }
+            }
         }
         // Class assertions are what the modules keep; anything else is computed when first asked.
     }
@@ -503,6 +837,7 @@ public final class ModularReasoner implements OWLReasoner {
     @Override
     public void dispose() {
         ontology.getOWLOntologyManager().removeOntologyChangeListener(listener);
+        Classifications.release(classification);
         if (whole != null) {
             whole.dispose();
         }
@@ -568,12 +903,14 @@ public final class ModularReasoner implements OWLReasoner {
 
     @Override
     public boolean isSatisfiable(OWLClassExpression classExpression) {
-        return whole().isSatisfiable(classExpression);
+        ClassifiedSchema kept = classExpression.isAnonymous() ? null : hierarchy();
+        return kept != null ? kept.isSatisfiable(classExpression.asOWLClass()) : whole().isSatisfiable(classExpression);
     }
 
     @Override
     public Node<OWLClass> getUnsatisfiableClasses() {
-        return whole().getUnsatisfiableClasses();
+        ClassifiedSchema kept = hierarchy();
+        return kept != null ? kept.bottomNode() : whole().getUnsatisfiableClasses();
     }
 
     @Override
@@ -593,27 +930,32 @@ public final class ModularReasoner implements OWLReasoner {
 
     @Override
     public Node<OWLClass> getTopClassNode() {
-        return whole().getTopClassNode();
+        ClassifiedSchema kept = hierarchy();
+        return kept != null ? kept.topNode() : whole().getTopClassNode();
     }
 
     @Override
     public Node<OWLClass> getBottomClassNode() {
-        return whole().getBottomClassNode();
+        ClassifiedSchema kept = hierarchy();
+        return kept != null ? kept.bottomNode() : whole().getBottomClassNode();
     }
 
     @Override
     public NodeSet<OWLClass> getSubClasses(OWLClassExpression ce, boolean direct) {
-        return whole().getSubClasses(ce, direct);
+        ClassifiedSchema kept = ce.isAnonymous() ? null : hierarchy();
+        return kept != null ? kept.subClasses(ce.asOWLClass(), direct) : whole().getSubClasses(ce, direct);
     }
 
     @Override
     public NodeSet<OWLClass> getSuperClasses(OWLClassExpression ce, boolean direct) {
-        return whole().getSuperClasses(ce, direct);
+        ClassifiedSchema kept = ce.isAnonymous() ? null : hierarchy();
+        return kept != null ? kept.superClasses(ce.asOWLClass(), direct) : whole().getSuperClasses(ce, direct);
     }
 
     @Override
     public Node<OWLClass> getEquivalentClasses(OWLClassExpression ce) {
-        return whole().getEquivalentClasses(ce);
+        ClassifiedSchema kept = ce.isAnonymous() ? null : hierarchy();
+        return kept != null ? kept.equivalentClasses(ce.asOWLClass()) : whole().getEquivalentClasses(ce);
     }
 
     @Override
@@ -704,6 +1046,14 @@ public final class ModularReasoner implements OWLReasoner {
 
     @Override
     public NodeSet<OWLNamedIndividual> getObjectPropertyValues(OWLNamedIndividual ind, OWLObjectPropertyExpression pe) {
+        // The edges of a property the rules read or conclude are kept by the engine (RuleProgram: they are exactly those).
+        InferredState now = consistentState();
+        Set<OWLNamedIndividual> kept = now != null && rules != null ? rules.objectValues(ind, pe) : null;
+        if (kept != null) {
+            OWLNamedIndividualNodeSet values = new OWLNamedIndividualNodeSet();
+            kept.forEach(value -> values.addNode(new OWLNamedIndividualNode(value)));
+            return values;
+        }
         return whole().getObjectPropertyValues(ind, pe);
     }
 

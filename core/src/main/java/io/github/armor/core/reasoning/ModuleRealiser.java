@@ -47,13 +47,27 @@ final class ModuleRealiser {
     private final OWLOntologyManager scratch = OWLManager.createOWLOntologyManager();
     private final TypeProfile.Interner profiles = new TypeProfile.Interner();
     private final ModuleShapes shapes = new ModuleShapes(scratch);
+    // Over an upper ontology: the classes realised (null: every class), and the schema cut to what modules use.
+    private final Set<OWLClass> tracked;
+    private final SchemaSlices slices;
     private volatile OWLReasoner running;
     private volatile boolean interrupted;
 
     ModuleRealiser(OWLReasonerFactory factory, OWLReasonerConfiguration configuration, List<OWLAxiom> schema) {
+        this(factory, configuration, schema, null, false);
+    }
+
+    /**
+     * @param tracked the classes to realise (null: every class, with the most specific ones)
+     * @param sliced  reason on the part of the schema the modules' assertions use ({@link SchemaSlices})
+     */
+    ModuleRealiser(OWLReasonerFactory factory, OWLReasonerConfiguration configuration, List<OWLAxiom> schema,
+                   Set<OWLClass> tracked, boolean sliced) {
         this.factory = factory;
         this.configuration = configuration;
         this.schema = List.copyOf(schema);
+        this.tracked = tracked == null ? null : Set.copyOf(tracked);
+        this.slices = sliced ? new SchemaSlices(scratch, this.schema) : null;
     }
 
     /** Whether the schema alone is consistent (then so is an ontology without individuals). */
@@ -146,6 +160,9 @@ final class ModuleRealiser {
             if (!reasoner.isConsistent()) {
                 return null;
             }
+            if (tracked != null) {
+                return realiseTracked(reasoner, batch);
+            }
             if (reasoner.getPrecomputableInferenceTypes().contains(InferenceType.CLASS_ASSERTIONS)) {
                 reasoner.precomputeInferences(InferenceType.CLASS_ASSERTIONS);
             }
@@ -178,6 +195,34 @@ final class ModuleRealiser {
         }
     }
 
+    /**
+     * The realised classes each member belongs to: one instance question per class, which needs
+     * no classification of the schema (SOMA's takes minutes), instead of every type of every member.
+     */
+    private List<Realised> realiseTracked(OWLReasoner reasoner, List<Module> batch) {
+        Map<OWLClass, Set<OWLNamedIndividual>> instances = new HashMap<>();
+        for (OWLClass owlClass : tracked) {
+            instances.put(owlClass, reasoner.getInstances(owlClass, false).entities()
+                    .collect(java.util.stream.Collectors.toSet()));
+        }
+        OWLClass thing = scratch.getOWLDataFactory().getOWLThing();
+        List<Realised> realised = new ArrayList<>();
+        for (Module module : batch) {
+            Map<OWLNamedIndividual, TypeProfile> types = new LinkedHashMap<>();
+            module.namedMembers().forEach(member -> {
+                Set<OWLClass> memberOf = new java.util.HashSet<>();
+                instances.forEach((owlClass, members) -> {
+                    if (members.contains(member)) {
+                        memberOf.add(owlClass);
+                    }
+                });
+                types.put(member, profiles.intern(TypeProfile.partial(memberOf, thing)));
+            });
+            realised.add(new Realised(module, true, types));
+        }
+        return realised;
+    }
+
     private static NodeSet<OWLClass> withSuperClasses(OWLReasoner reasoner, NodeSet<OWLClass> direct) {
         OWLClassNodeSet all = new OWLClassNodeSet();
         // Every individual is a Thing; JFact leaves it out for some (individuals named in the schema).
@@ -200,7 +245,7 @@ final class ModuleRealiser {
         }
         OWLReasoner reasoner = null;
         try {
-            scratch.addAxioms(ontology, schema.stream());
+            scratch.addAxioms(ontology, schemaFor(abox).stream());
             scratch.addAxioms(ontology, abox.stream());
             reasoner = factory.createReasoner(ontology, configuration);
             running = reasoner;
@@ -213,6 +258,19 @@ final class ModuleRealiser {
             }
             scratch.removeOntology(ontology);
         }
+    }
+
+    /** The schema a reasoner on these assertions needs: all of it, or the slice their signature uses. */
+    private List<OWLAxiom> schemaFor(Set<OWLAxiom> abox) {
+        if (slices == null) {
+            return schema;
+        }
+        Set<org.semanticweb.owlapi.model.OWLEntity> signature = new java.util.HashSet<>();
+        abox.forEach(axiom -> axiom.signature().forEach(signature::add));
+        if (tracked != null) {
+            signature.addAll(tracked);
+        }
+        return slices.sliceFor(signature);
     }
 
     private void checkInterrupted() {

@@ -15,13 +15,30 @@ import org.semanticweb.owlapi.reasoner.impl.OWLClassNodeSet;
  * specific ones, each as nodes of equivalent classes. Individuals of one kind share one profile
  * (see {@link Interner}), so ten thousand robots cost one profile, not ten thousand.
  *
- * @param all    every named class of the individual (owl:Thing included), by equivalence node
- * @param direct its most specific named classes, by equivalence node
+ * <p>A profile of a reference over an upper ontology may be partial: it then holds owl:Thing and
+ * the classes the reference realises against ({@link RealisationScope}) that the individual
+ * belongs to, nothing about other classes, and no most specific classes.
+ *
+ * @param all      every named class of the individual (owl:Thing included), by equivalence node
+ * @param direct   its most specific named classes, by equivalence node
+ * @param complete whether {@code all} holds every class (else only the realised ones it has)
  */
-record TypeProfile(Set<Set<OWLClass>> all, Set<Set<OWLClass>> direct) {
+record TypeProfile(Set<Set<OWLClass>> all, Set<Set<OWLClass>> direct, boolean complete) {
+
+    TypeProfile(Set<Set<OWLClass>> all, Set<Set<OWLClass>> direct) {
+        this(all, direct, true);
+    }
 
     static TypeProfile of(NodeSet<OWLClass> all, NodeSet<OWLClass> direct) {
         return new TypeProfile(nodes(all), nodes(direct));
+    }
+
+    /** The classes among those realised that an individual belongs to, and owl:Thing. */
+    static TypeProfile partial(Set<OWLClass> memberOf, OWLClass thing) {
+        Set<Set<OWLClass>> all = new java.util.HashSet<>();
+        all.add(Set.of(thing));
+        memberOf.forEach(owlClass -> all.add(Set.of(owlClass)));
+        return new TypeProfile(Set.copyOf(all), Set.of(), false);
     }
 
     private static Set<Set<OWLClass>> nodes(NodeSet<OWLClass> nodeSet) {

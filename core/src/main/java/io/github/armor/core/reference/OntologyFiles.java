@@ -71,7 +71,8 @@ public final class OntologyFiles {
      * reaches a file or the network on its own.
      */
     private static OWLOntologyManager newManager(ImportResolver imports) {
-        OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
+        // Concurrent: the web view reads a reference's ontology without its lock while a writer changes it.
+        OWLOntologyManager manager = OWLManager.createConcurrentOWLOntologyManager();
         manager.setOntologyParsers(java.util.stream.StreamSupport.stream(manager.getOntologyParsers().spliterator(), false)
                 .filter(p -> UNUSED_PARSERS.stream().noneMatch(p.getSupportedFormat().getKey()::contains))
                 .collect(java.util.stream.Collectors.toSet()));

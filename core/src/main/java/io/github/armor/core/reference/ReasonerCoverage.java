@@ -143,10 +143,10 @@ public final class ReasonerCoverage implements OWLOntologyChangeListener {
         return summary;
     }
 
-    /** What a LOAD says about it on success (empty when nothing is left unused). */
-    public String loadReport() {
+    /** What a LOAD says after the profile on success (empty when nothing is left unused). */
+    public String unusedReport() {
         String now = summary;
-        return now.isEmpty() ? "" : "profile: " + profileName + "; " + now + "; answers may be incomplete";
+        return now.isEmpty() ? "" : now + "; answers may be incomplete";
     }
 
     @Override

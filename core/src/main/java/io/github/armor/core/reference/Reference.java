@@ -6,6 +6,7 @@ import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.reasoning.ModularReasoner;
 import io.github.armor.core.reasoning.PublishedStates;
+import io.github.armor.core.reasoning.RealisationScope;
 import io.github.armor.core.reasoning.ReasoningPlan;
 import java.util.ArrayList;
 import java.util.List;
@@ -17,9 +18,11 @@ import java.util.function.Function;
 import java.util.function.Supplier;
 import org.semanticweb.owlapi.model.OWLDataFactory;
 import org.semanticweb.owlapi.model.OWLDocumentFormat;
+import org.semanticweb.owlapi.model.OWLInverseObjectPropertiesAxiom;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
+import org.semanticweb.owlapi.model.RemoveAxiom;
 import org.semanticweb.owlapi.reasoner.InconsistentOntologyException;
 import org.semanticweb.owlapi.reasoner.InferenceType;
 import org.semanticweb.owlapi.reasoner.OWLReasoner;
@@ -256,14 +259,42 @@ public final class Reference {
     }
 
     /**
-     * What LOAD says about the reference beyond success: what the reasoner will not use, and why
-     * an ontology that would be reasoned on in modules is reasoned on whole.
+     * What LOAD says about the reference beyond success: its profile, what the reasoner will not
+     * use, how many classes and what classifying them cost, and how it is reasoned on.
      */
     public LoadStatement loadStatement() {
         ReasoningPlan plan = reasoningPlan();
-        return new LoadStatement().with("coverage", coverage.loadReport())
-                .with("reasoning", reasoner instanceof ModularReasoner && plan.whole() ? "reasoning " + plan.describe()
+        return new LoadStatement()
+                .with("profile", coverage.profileName().isEmpty() ? "" : "profile: " + coverage.profileName())
+                .with("coverage", coverage.unusedReport())
+                .with("classes", classification().describe())
+                .with("reasoning", plan != ReasoningPlan.NOT_YET && !bufferedReasoner ? "reasoning " + plan.describe()
                         : "");
+    }
+
+    /** The schema's kept class hierarchy, when the reasoner keeps one (in modules). Safe from any thread. */
+    public Optional<io.github.armor.core.reasoning.ClassifiedSchema> classifiedSchema() {
+        return reasoner instanceof ModularReasoner modular ? Optional.ofNullable(modular.classifiedSchema())
+                : Optional.empty();
+    }
+
+    /** What CREATE says: an empty ontology's only news are what the reasoner will not use, and whole-ontology reasoning. */
+    public LoadStatement createStatement() {
+        ReasoningPlan plan = reasoningPlan();
+        String unused = coverage.unusedReport();
+        return new LoadStatement().with("profile", unused.isEmpty() ? "" : "profile: " + coverage.profileName())
+                .with("coverage", unused)
+                .with("reasoning", plan.whole() && !bufferedReasoner && ModularReasoner.handles(reasonerName)
+                        ? "reasoning " + plan.describe() : "");
+    }
+
+    /** How many classes the ontology has and what its kept hierarchy cost. Safe from any thread. */
+    public Classification classification() {
+        OWLReasoner current = reasoner;
+        int classes = (int) ontology.classesInSignature(org.semanticweb.owlapi.model.parameters.Imports.INCLUDED)
+                .filter(owlClass -> !owlClass.isBuiltIn()).count();
+        return current instanceof ModularReasoner modular ? Classification.of(classes, modular)
+                : Classification.notKept(classes);
     }
 
     /**
@@ -336,7 +367,10 @@ public final class Reference {
         timedReasoning(() -> {
             bringReasonerUpToDate();
             refreshConsistency();
-            if (consistent) {
+            // Over an upper ontology a plain reasoner answers each question when asked: realising
+            // every individual against SOMA's classes takes longer than any robot waits.
+            if (consistent && (reasoner instanceof ModularReasoner
+                    || !RealisationScope.overUpperOntology(ontology))) {
                 precompute(InferenceType.CLASS_HIERARCHY);
                 precompute(InferenceType.CLASS_ASSERTIONS);
             }
@@ -426,10 +460,11 @@ public final class Reference {
         }
     }
 
-    private void enact(List<? extends OWLOntologyChange> changes) {
-        if (changes.isEmpty()) {
+    private void enact(List<? extends OWLOntologyChange> requested) {
+        if (requested.isEmpty()) {
             return;
         }
+        List<OWLOntologyChange> changes = requested.stream().map(Reference::asStored).toList();
         List<OWLOntologyChange> enacted = new ArrayList<>(manager.applyChangesAndGetDetails(changes).getEnactedChanges());
         modificationCount++;
         unreasonedChanges |= !enacted.isEmpty();
@@ -440,6 +475,22 @@ public final class Reference {
         if (!bufferedReasoner && !enacted.isEmpty()) {
             synchroniseReasoner();
         }
+    }
+
+    /**
+     * A removal of the axiom as the ontology stores it. InverseObjectProperties(p q) equals
+     * InverseObjectProperties(q p) but is written in the order it was added: undoing the removal
+     * of the other order would put back an axiom written differently (a SAVE, a digest and the
+     * journal would see a change that a rolled-back list must not make).
+     */
+    private static OWLOntologyChange asStored(OWLOntologyChange change) {
+        if (change.isRemoveAxiom() && change.getAxiom() instanceof OWLInverseObjectPropertiesAxiom inverse) {
+            return change.getOntology().inverseObjectPropertyAxioms(inverse.getFirstProperty())
+                    .filter(inverse::equals).findFirst()
+                    .map(stored -> (OWLOntologyChange) new RemoveAxiom(change.getOntology(), stored))
+                    .orElse(change);
+        }
+        return change;
     }
 
     /**

@@ -4,6 +4,7 @@ package io.github.armor.core.server;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import io.github.armor.core.ArmorCore;
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.api.SizeLimits;
@@ -183,7 +184,7 @@ public final class CoreServer {
             refused.add("response", WireCodec.response(failure));
         } else if (reply.has("list")) {
             int count = request.getAsJsonArray("directives").size();
-            refused.add("list", WireCodec.listResponse(new ArmorCore.ListResponse(false, false,
+            refused.add("list", WireCodec.listResponse(new ListResponse(false, false,
                     java.util.Collections.nCopies(count, failure))));
         } else {
             refused.addProperty("error", tooLarge.getMessage());

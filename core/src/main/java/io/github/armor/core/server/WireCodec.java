@@ -4,7 +4,7 @@ package io.github.armor.core.server;
 import com.google.gson.JsonArray;
 import com.google.gson.JsonElement;
 import com.google.gson.JsonObject;
-import io.github.armor.core.ArmorCore.ListResponse;
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.DirectiveJson;
 import io.github.armor.core.api.Response;

@@ -3,10 +3,12 @@ package io.github.armor.core.view;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
+import io.github.armor.core.answers.Syntax;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
-import io.github.armor.core.command.Queries;
-import io.github.armor.core.command.Syntax;
+import io.github.armor.core.command.builtin.Queries;
+import io.github.armor.core.reasoning.ClassifiedSchema;
+import io.github.armor.core.reasoning.PublishedStates.Published;
 import io.github.armor.core.reference.Reference;
 import java.util.ArrayDeque;
 import java.util.HashSet;
@@ -37,6 +39,11 @@ final class ClassHierarchy {
 
     JsonObject hierarchy(String referenceName) {
         Reference reference = reads.reference(referenceName);
+        Optional<Published> published = reads.offLock(reference);
+        Optional<ClassifiedSchema> kept = reference.classifiedSchema();
+        if (published.isPresent() && kept.isPresent()) {
+            return keptHierarchy(reference, published.get().state().consistent(), kept.get());
+        }
         List<OWLClass> classes = reads.whole(reference, r -> r.ontology().classesInSignature(Imports.INCLUDED)
                 .filter(c -> !c.isBuiltIn()).sorted(ViewJson.BY_NAME).toList());
         Set<OWLClass> unsatisfiable = reads.whole(reference, r -> ViewReads.inferred(r, reasoner ->
@@ -65,6 +72,38 @@ final class ClassHierarchy {
         JsonObject view = new JsonObject();
         view.addProperty("consistent", reference.isConsistent());
         view.addProperty("inferred", allInferred[0]);
+        view.add("classes", nodes);
+        return view;
+    }
+
+    /**
+     * The hierarchy the reference keeps for its schema (classified once: {@link ClassifiedSchema}),
+     * read without the reference's lock; the asserted one when the ontology is inconsistent.
+     */
+    private static JsonObject keptHierarchy(Reference reference, boolean consistent, ClassifiedSchema kept) {
+        Set<OWLClass> unsatisfiable = consistent ? kept.bottomNode().entities().filter(c -> !c.isOWLNothing())
+                .collect(Collectors.toSet()) : Set.of();
+        JsonArray nodes = new JsonArray();
+        reference.ontology().classesInSignature(Imports.INCLUDED).filter(c -> !c.isBuiltIn())
+                .sorted(ViewJson.BY_NAME).forEach(owlClass -> {
+                    Set<OWLClass> asserted = assertedParents(reference, owlClass);
+                    Set<OWLClass> parents = !consistent || unsatisfiable.contains(owlClass) ? asserted
+                            : kept.superClasses(owlClass, true).entities().filter(c -> !c.isOWLThing())
+                            .collect(Collectors.toSet());
+                    JsonObject node = ViewJson.entity(owlClass);
+                    JsonArray shown = new JsonArray();
+                    parents.stream().sorted(ViewJson.BY_NAME)
+                            .forEach(parent -> shown.add(ViewJson.entity(parent, asserted.contains(parent))));
+                    node.add("parents", shown);
+                    node.add("equivalents", ViewJson.entities(consistent ? kept.equivalentClasses(owlClass).entities()
+                            .filter(c -> !c.equals(owlClass) && !c.isBuiltIn()).collect(Collectors.toSet())
+                            : Set.of()));
+                    node.addProperty("unsatisfiable", unsatisfiable.contains(owlClass));
+                    nodes.add(node);
+                });
+        JsonObject view = new JsonObject();
+        view.addProperty("consistent", consistent);
+        view.addProperty("inferred", consistent);
         view.add("classes", nodes);
         return view;
     }

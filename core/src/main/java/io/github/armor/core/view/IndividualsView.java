@@ -3,16 +3,20 @@ package io.github.armor.core.view;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
+import io.github.armor.core.answers.Rendering;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
-import io.github.armor.core.command.Rendering;
+import io.github.armor.core.reasoning.PublishedStates.Published;
 import io.github.armor.core.reference.Reference;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
+import java.util.function.Consumer;
+import java.util.function.Function;
 import java.util.stream.Collectors;
 import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.OWLClass;
@@ -43,24 +47,33 @@ final class IndividualsView {
      */
     JsonObject page(String referenceName, String search, int offset, int limit) {
         Reference reference = reads.reference(referenceName);
+        Optional<Published> published = reads.offLock(reference);
         String needle = search.trim().toLowerCase(Locale.ROOT);
-        List<OWLNamedIndividual> matches = reads.whole(reference, r -> r.ontology()
+        Function<Reference, List<OWLNamedIndividual>> find = r -> r.ontology()
                 .individualsInSignature(Imports.INCLUDED)
                 .filter(i -> needle.isEmpty() || i.getIRI().getShortForm().toLowerCase(Locale.ROOT).contains(needle))
-                .sorted(ViewJson.BY_NAME).toList());
+                .sorted(ViewJson.BY_NAME).toList();
+        List<OWLNamedIndividual> matches = published.isPresent() ? find.apply(reference) : reads.whole(reference, find);
         List<OWLNamedIndividual> shown = matches.subList(Math.min(offset, matches.size()),
                 Math.min(offset + limit, matches.size()));
         JsonArray items = new JsonArray();
-        reads.inSlices(reference, shown, individual -> {
+        Consumer<OWLNamedIndividual> describe = individual -> {
             JsonObject item = ViewJson.entity(individual);
             Set<OWLClass> asserted = assertedTypes(reference, individual);
             Set<OWLClass> types = new LinkedHashSet<>(asserted);
-            types.addAll(ViewReads.directTypes(reference, individual));
+            types.addAll(published.map(state -> ViewReads.directTypes(state.state(), individual))
+                    .orElseGet(() -> ViewReads.directTypes(reference, individual)));
             item.add("types", typesJson(types, asserted));
             items.add(item);
-        });
+        };
+        if (published.isPresent()) {
+            shown.forEach(describe);
+        } else {
+            reads.inSlices(reference, shown, describe);
+        }
         JsonObject view = new JsonObject();
-        view.addProperty("consistent", reference.isConsistent());
+        view.addProperty("consistent", published.map(state -> state.state().consistent())
+                .orElse(reference.isConsistent()));
         view.addProperty("total", matches.size());
         view.addProperty("offset", offset);
         view.add("individuals", items);

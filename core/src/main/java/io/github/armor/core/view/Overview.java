@@ -5,6 +5,7 @@ import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.reference.Classification;
 import io.github.armor.core.reference.Reference;
 import java.util.function.ToLongFunction;
 import org.semanticweb.owlapi.model.OWLOntology;
@@ -78,19 +79,16 @@ final class Overview {
             summary.addProperty("last_reasoning_at_ms", reference.lastReasoningEpochMs());
             summary.addProperty("last_reasoning_ms", reference.lastReasoningNanos() / 1e6);
         }
+        summary.addProperty("profile", reference.coverage().profileName());
+        if (reads.offLock(reference).isPresent()) {
+            // Counted without the reference's lock: its ontology may be read while a writer changes it.
+            counts(reference, summary);
+            summary.addProperty("busy", reference.isBusy());
+            return summary;
+        }
         try {
             reference.locked(waitMs, r -> {
-                OWLOntology ontology = r.ontology();
-                summary.addProperty("pending_changes", r.hasPending());
-                summary.addProperty("classes", ontology.getClassesInSignature(Imports.INCLUDED).size());
-                summary.addProperty("individuals", ontology.getIndividualsInSignature(Imports.INCLUDED).size());
-                summary.addProperty("object_property_count",
-                        ontology.getObjectPropertiesInSignature(Imports.INCLUDED).size());
-                summary.addProperty("data_property_count",
-                        ontology.getDataPropertiesInSignature(Imports.INCLUDED).size());
-                summary.addProperty("axioms", ontology.importsClosure().mapToLong(OWLOntology::getAxiomCount).sum());
-                summary.addProperty("logical_axioms",
-                        ontology.importsClosure().mapToLong(OWLOntology::getLogicalAxiomCount).sum());
+                counts(r, summary);
                 return null;
             });
             summary.addProperty("busy", false);
@@ -101,5 +99,25 @@ final class Overview {
             summary.addProperty("busy", true);
         }
         return summary;
+    }
+
+    /** Entity and axiom counts, buffered changes, and the classes' cost (classification). */
+    private static void counts(Reference r, JsonObject summary) {
+        OWLOntology ontology = r.ontology();
+        summary.addProperty("pending_changes", r.hasPending());
+        Classification classification = r.classification();
+        summary.addProperty("classification", classification.describe());
+        if (classification.kept()) {
+            summary.addProperty("classification_ms", classification.nanos() / 1e6);
+        }
+        summary.addProperty("classes", ontology.getClassesInSignature(Imports.INCLUDED).size());
+        summary.addProperty("individuals", ontology.getIndividualsInSignature(Imports.INCLUDED).size());
+        summary.addProperty("object_property_count",
+                ontology.getObjectPropertiesInSignature(Imports.INCLUDED).size());
+        summary.addProperty("data_property_count",
+                ontology.getDataPropertiesInSignature(Imports.INCLUDED).size());
+        summary.addProperty("axioms", ontology.importsClosure().mapToLong(OWLOntology::getAxiomCount).sum());
+        summary.addProperty("logical_axioms",
+                ontology.importsClosure().mapToLong(OWLOntology::getLogicalAxiomCount).sum());
     }
 }

@@ -5,6 +5,8 @@ import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.reasoning.InferredState;
+import io.github.armor.core.reasoning.PublishedStates.Published;
 import io.github.armor.core.reference.Reference;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -17,6 +19,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.function.BooleanSupplier;
 import java.util.stream.Collectors;
 import org.semanticweb.owlapi.model.AxiomType;
 import org.semanticweb.owlapi.model.EntityType;
@@ -58,7 +61,10 @@ final class PropertyGraph {
     JsonObject graph(String referenceName, List<String> propertyNames, String className, String focusName,
                      int limit) {
         Reference reference = reads.reference(referenceName);
-        Scope scope = reads.whole(reference, r -> scope(r, propertyNames, className, focusName));
+        Optional<Published> published = reads.offLock(reference);
+        InferredState state = published.map(Published::state).orElse(null);
+        Scope scope = state != null ? scope(reference, propertyNames, className, focusName, state)
+                : reads.whole(reference, r -> scope(r, propertyNames, className, focusName, null));
         Set<OWLNamedIndividual> candidates = new HashSet<>(scope.candidates());
         Iterator<OWLNamedIndividual> seeds = scope.focus() != null ? List.of(scope.focus()).iterator()
                 : scope.candidates().iterator();
@@ -66,7 +72,7 @@ final class PropertyGraph {
         ArrayDeque<OWLNamedIndividual> frontier = new ArrayDeque<>();
         Map<OWLNamedIndividual, List<OWLClass>> types = new LinkedHashMap<>();
         List<Link> links = new ArrayList<>();
-        reads.inSlices(reference, () -> {
+        BooleanSupplier step = () -> {
             OWLNamedIndividual next = frontier.poll();
             while (next == null && seeds.hasNext() && kept.size() < limit) {
                 OWLNamedIndividual seed = seeds.next();
@@ -77,24 +83,37 @@ final class PropertyGraph {
             if (next == null) {
                 return false;
             }
-            types.put(next, mostSpecificTypes(reference, next));
-            for (OWLNamedIndividual neighbour : expand(reference, next, scope.properties(), candidates, links)) {
+            types.put(next, mostSpecificTypes(reference, next, state));
+            for (OWLNamedIndividual neighbour : expand(reference, next, scope.properties(), candidates, links,
+                    state == null)) {
                 if (kept.size() < limit && kept.add(neighbour)) {
                     frontier.add(neighbour);
                 }
             }
             return true;
-        });
+        };
+        if (state != null) {
+            boolean more = true;
+            while (more) {
+                more = step.getAsBoolean();
+            }
+        } else {
+            reads.inSlices(reference, step);
+        }
         JsonObject view = new JsonObject();
         view.add("nodes", nodes(types));
         view.add("edges", edges(links, kept));
         view.addProperty("candidates", candidates.size());
         view.addProperty("truncated", kept.size() >= limit && kept.size() < candidates.size());
-        view.addProperty("consistent", reference.isConsistent());
+        view.addProperty("consistent", state != null ? state.consistent() : reference.isConsistent());
+        // Links the reasoner infers need it on the whole ontology; a view from the published state shows asserted ones.
+        view.addProperty("inferred_links", state == null);
         return view;
     }
 
-    private static Scope scope(Reference reference, List<String> propertyNames, String className, String focusName) {
+    /** What the request names; {@code state}: the published one to read instances from (null: ask the reasoner). */
+    private static Scope scope(Reference reference, List<String> propertyNames, String className, String focusName,
+                               InferredState state) {
         List<OWLObjectProperty> properties = new ArrayList<>();
         if (propertyNames == null) {
             reference.ontology().objectPropertiesInSignature(Imports.INCLUDED).filter(p -> !p.isBuiltIn())
@@ -112,8 +131,12 @@ final class PropertyGraph {
         } else {
             OWLClass owlClass = known(reference, EntityType.CLASS, className);
             Set<OWLNamedIndividual> instances = ClassHierarchy.assertedInstances(reference, owlClass);
-            ViewReads.inferred(reference, reasoner -> reasoner.getInstances(owlClass, false).entities().toList())
-                    .ifPresent(instances::addAll);
+            if (state == null) {
+                ViewReads.inferred(reference, reasoner -> reasoner.getInstances(owlClass, false).entities().toList())
+                        .ifPresent(instances::addAll);
+            } else if (state.consistent() && state.knows(owlClass)) {
+                instances.addAll(state.instances(owlClass));
+            }
             candidates = instances.stream().sorted(ViewJson.BY_NAME).toList();
         }
         OWLNamedIndividual focus = null;
@@ -159,15 +182,18 @@ final class PropertyGraph {
      */
     private static Set<OWLNamedIndividual> expand(Reference reference, OWLNamedIndividual individual,
                                                   List<OWLObjectProperty> properties,
-                                                  Set<OWLNamedIndividual> candidates, List<Link> links) {
+                                                  Set<OWLNamedIndividual> candidates, List<Link> links,
+                                                  boolean inferred) {
         Set<OWLNamedIndividual> neighbours = new LinkedHashSet<>();
         for (OWLObjectProperty property : properties) {
             Set<OWLNamedIndividual> asserted = EntitySearcher.getObjectPropertyValues(individual, property,
                     reference.ontology().importsClosure()).filter(i -> i.isNamed())
                     .map(i -> i.asOWLNamedIndividual()).collect(Collectors.toSet());
             Set<OWLNamedIndividual> values = new LinkedHashSet<>(asserted);
-            ViewReads.inferred(reference, reasoner -> reasoner.getObjectPropertyValues(individual, property)
-                    .entities().toList()).ifPresent(values::addAll);
+            if (inferred) {
+                ViewReads.inferred(reference, reasoner -> reasoner.getObjectPropertyValues(individual, property)
+                        .entities().toList()).ifPresent(values::addAll);
+            }
             for (OWLNamedIndividual value : values) {
                 if (candidates.contains(value)) {
                     links.add(new Link(individual, value, property, asserted.contains(value)));
@@ -187,8 +213,10 @@ final class PropertyGraph {
         return neighbours;
     }
 
-    private static List<OWLClass> mostSpecificTypes(Reference reference, OWLNamedIndividual individual) {
-        Set<OWLClass> types = new HashSet<>(ViewReads.directTypes(reference, individual));
+    private static List<OWLClass> mostSpecificTypes(Reference reference, OWLNamedIndividual individual,
+                                                    InferredState state) {
+        Set<OWLClass> types = new HashSet<>(state != null ? ViewReads.directTypes(state, individual)
+                : ViewReads.directTypes(reference, individual));
         if (types.isEmpty()) {
             types.addAll(IndividualsView.assertedTypes(reference, individual));
         }

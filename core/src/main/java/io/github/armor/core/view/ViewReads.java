@@ -3,7 +3,9 @@ package io.github.armor.core.view;
 
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
+import io.github.armor.core.reasoning.InferredState;
 import io.github.armor.core.reasoning.ModularReasoner;
+import io.github.armor.core.reasoning.PublishedStates.Published;
 import io.github.armor.core.reference.Reference;
 import io.github.armor.core.reference.ReferenceRegistry;
 import java.util.HashSet;
@@ -43,6 +45,32 @@ final class ViewReads {
 
     ReferenceRegistry references() {
         return references;
+    }
+
+    /**
+     * What a view shows of a reference that publishes its reasoned state (a reference reasoned on
+     * in modules): that state, read without the reference's lock, beside the ontology's asserted
+     * axioms, which its manager lets any thread read while a writer changes it (the writer
+     * takes the ontology's own write lock only to apply a change). Open pages then never make a
+     * robot's directive wait, nor wake a reasoner. Empty when there is no such state: the view
+     * reads the reference as a directive does.
+     */
+    Optional<Published> offLock(Reference reference) {
+        Optional<Published> published = reference.publishedState();
+        published.ifPresent(state -> checkStillLoaded(reference));
+        return published;
+    }
+
+    /**
+     * An individual's most specific types as a published state knows them: all of them when its
+     * module was realised against every class, else the realised classes it belongs to (over an
+     * upper ontology).
+     */
+    static Set<OWLClass> directTypes(InferredState state, OWLNamedIndividual individual) {
+        Set<OWLClass> types = new HashSet<>(state.classesOf(individual, true)
+                .or(() -> state.realisedClassesOf(individual)).orElse(Set.of()));
+        types.removeIf(OWLClass::isOWLThing);
+        return types;
     }
 
     /** Runs {@code work} holding the reference, as one directive would. */

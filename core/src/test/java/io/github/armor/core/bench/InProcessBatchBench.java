@@ -2,6 +2,7 @@
 package io.github.armor.core.bench;
 
 import io.github.armor.core.ArmorCore;
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
@@ -131,7 +132,7 @@ public final class InProcessBatchBench {
         for (int list = 0; timer.more(list, warmupLists); list++) {
             List<Directive> directives = directives("batch", list, listSize);
             long start = System.nanoTime();
-            ArmorCore.ListResponse answer = core.executeList(directives);
+            ListResponse answer = core.executeList(directives);
             timer.record(list, warmupLists, start);
             if (!answer.success()) {
                 throw new IllegalStateException("list " + list + " failed: " + answer.responses());

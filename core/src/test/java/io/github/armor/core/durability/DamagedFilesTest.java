@@ -22,6 +22,9 @@ import org.junit.jupiter.api.io.TempDir;
  * item 6): a restore comes back whole, or up to its last intact point with the loss reported;
  * never a crash, never a silently different ontology.
  */
+// Campaigns over every I/O call or byte: minutes on a loaded 2-core machine, beyond the suite's
+// default limit per test.
+@org.junit.jupiter.api.Timeout(value = 20, unit = java.util.concurrent.TimeUnit.MINUTES)
 class DamagedFilesTest {
     // Every STRIDE-th byte of every file (make test); the fault-injection script flips every byte.
     private static final int STRIDE = Integer.getInteger("armor.flip.stride", 11);

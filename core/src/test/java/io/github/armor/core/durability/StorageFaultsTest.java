@@ -27,6 +27,9 @@ import org.junit.jupiter.api.io.TempDir;
  * {@code -Darmor.faults.stride=1} fails every call, not every third
  * (tests/integration/fault_injection.py --storage runs it so).
  */
+// Campaigns over every I/O call or byte: minutes on a loaded 2-core machine, beyond the suite's
+// default limit per test.
+@org.junit.jupiter.api.Timeout(value = 20, unit = java.util.concurrent.TimeUnit.MINUTES)
 class StorageFaultsTest {
     private static final int ROUNDS = Integer.getInteger("armor.faults.rounds", 1);
     // make test fails every STRIDE-th call; the fault-injection script fails every one.

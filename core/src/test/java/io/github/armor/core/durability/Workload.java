@@ -3,6 +3,7 @@ package io.github.armor.core.durability;
 
 import com.google.common.util.concurrent.MoreExecutors;
 import io.github.armor.core.ArmorCore;
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
@@ -105,7 +106,7 @@ final class Workload {
 
     static Response answer(ArmorCore core, Step step) {
         if (step.isList()) {
-            ArmorCore.ListResponse list = core.executeList(step.directives());
+            ListResponse list = core.executeList(step.directives());
             return list.responses().stream().filter(r -> !r.success()).findFirst()
                     .orElse(list.responses().get(0));
         }

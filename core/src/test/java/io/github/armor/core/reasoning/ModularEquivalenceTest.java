@@ -173,6 +173,8 @@ class ModularEquivalenceTest {
         int baseSteps = 0;
         int manyModules = 0;
         java.util.Map<String, Integer> wholeBecause = new java.util.TreeMap<>();
+        int localSteps = 0;
+        List<String> overRemade = new ArrayList<>();
         for (int step = 0; step < steps; step++) {
             List<OWLOntologyChange> changes = randomChanges();
             List<? extends OWLOntologyChange> enacted = manager.applyChangesAndGetDetails(changes).getEnactedChanges();
@@ -197,12 +199,18 @@ class ModularEquivalenceTest {
             boolean baseLinks = modular.linkingProperties().equals(loadedLinks);
             baseSteps += baseLinks ? 1 : 0;
             if (baseLinks && !update.everything() && named * 2 <= update.individuals()) {
-                assertTrue(update.remade() * 2 <= update.individuals(),
-                        () -> "most individuals must stay outside the modules reasoned on again: " + update + " after "
-                                + after);
+                // A step may rightly remake a big module (a zone and its rooms removed at once);
+                // what must hold is that such steps are rare, as a whole-ABox fallback never is.
+                localSteps++;
+                if (update.remade() * 2 > update.individuals()) {
+                    overRemade.add(update + " after " + after);
+                }
             }
             manyModules += baseLinks && update.modules() >= update.individuals() / 4 ? 1 : 0;
         }
+        int local = localSteps;
+        assertTrue(overRemade.size() * 10 <= localSteps, () -> run + ": most individuals must stay outside the"
+                + " modules reasoned on again, on all but a tenth of " + local + " steps; not on " + overRemade);
         int modularDone = modularSteps;
         assertTrue(modularSteps > steps * 2 / 3, () -> run + ": most steps must exercise the modules, not the"
                 + " fallback: " + modularDone + "; whole because " + wholeBecause);
@@ -271,6 +279,220 @@ class ModularEquivalenceTest {
         modular.dispose();
     }
 
+    /** The course's topological map with its rules, and more rules over the property hierarchy and a defined class. */
+    private static final String RULES_SCHEMA = """
+            Prefix(:=<http://www.example.org/robotics#>)
+            Prefix(xsd:=<http://www.w3.org/2001/XMLSchema#>)
+            Prefix(swrlb:=<http://www.w3.org/2003/11/swrlb#>)
+            Prefix(var:=<urn:swrl:var#>)
+            Ontology(<http://www.example.org/robotics>
+            SubClassOf(:Room :Location) SubClassOf(:Corridor :Location) DisjointClasses(:Room :Corridor :Door :Robot)
+            ObjectPropertyDomain(:hasDoor :Location) ObjectPropertyRange(:hasDoor :Door)
+            FunctionalDataProperty(:now) FunctionalDataProperty(:visitedAt) SubClassOf(:URGENT :Room)
+            EquivalentClasses(:Occupied ObjectIntersectionOf(:Location ObjectSomeValuesFrom(ObjectInverseOf(:isIn) :Robot)))
+            SubObjectPropertyOf(:isIn :at) InverseObjectProperties(:connectedTo :connectedFrom)
+            ObjectPropertyDomain(:canReach :Robot) DataPropertyDomain(:lastSeen :Robot) SubClassOf(:Watched :Location)
+            DLSafeRule(Body(ClassAtom(:Location Variable(var:a)) ClassAtom(:Location Variable(var:b))
+                ObjectPropertyAtom(:hasDoor Variable(var:a) Variable(var:d)) ObjectPropertyAtom(:hasDoor Variable(var:b) Variable(var:d))
+                DifferentIndividualsAtom(Variable(var:a) Variable(var:b)))
+                Head(ObjectPropertyAtom(:connectedTo Variable(var:a) Variable(var:b))))
+            DLSafeRule(Body(ClassAtom(:Robot Variable(var:r)) ObjectPropertyAtom(:at Variable(var:r) Variable(var:a))
+                ObjectPropertyAtom(:connectedTo Variable(var:a) Variable(var:b)))
+                Head(ObjectPropertyAtom(:canReach Variable(var:r) Variable(var:b))))
+            DLSafeRule(Body(ClassAtom(:Robot Variable(var:r)) DataPropertyAtom(:now Variable(var:r) Variable(var:t))
+                DataPropertyAtom(:urgencyThreshold Variable(var:r) Variable(var:k)) ClassAtom(:Room Variable(var:l))
+                DataPropertyAtom(:visitedAt Variable(var:l) Variable(var:v))
+                %s)
+                Head(ClassAtom(:URGENT Variable(var:l))))
+            DLSafeRule(Body(ClassAtom(:Occupied Variable(var:l)) ObjectPropertyAtom(:connectedFrom Variable(var:l) Variable(var:c))
+                ClassAtom(:Corridor Variable(var:c)))
+                Head(ClassAtom(:Watched Variable(var:c))))
+            DLSafeRule(Body(ClassAtom(:Robot Variable(var:r)) DataPropertyAtom(:now Variable(var:r) Variable(var:t))
+                BuiltInAtom(swrlb:lessThanOrEqual Variable(var:t) "1200"^^xsd:integer))
+                Head(DataPropertyAtom(:lastSeen Variable(var:r) Variable(var:t))))
+            )""";
+
+    /** The built-ins of the URGENT rule, one per seed: the course's, and the same test written otherwise. */
+    private static final List<String> URGENCY_TESTS = List.of(
+            "BuiltInAtom(swrlb:subtract Variable(var:age) Variable(var:t) Variable(var:v))"
+                    + " BuiltInAtom(swrlb:greaterThan Variable(var:age) Variable(var:k))",
+            "BuiltInAtom(swrlb:subtract Variable(var:age) Variable(var:t) Variable(var:v))"
+                    + " BuiltInAtom(swrlb:lessThanOrEqual Variable(var:k) Variable(var:age))",
+            "BuiltInAtom(swrlb:add Variable(var:due) Variable(var:v) Variable(var:k))"
+                    + " BuiltInAtom(swrlb:lessThan Variable(var:due) Variable(var:t))",
+            "BuiltInAtom(swrlb:subtract Variable(var:age) Variable(var:t) Variable(var:v))"
+                    + " BuiltInAtom(swrlb:multiply Variable(var:twice) Variable(var:age) \"2\"^^xsd:integer)"
+                    + " BuiltInAtom(swrlb:greaterThanOrEqual Variable(var:twice) Variable(var:k))");
+
+    /**
+     * SWRL rules with built-ins beside the modules, against Openllet on the whole ontology (the
+     * reference for rules with built-ins; HermiT has no built-ins): the students' loop (the robot
+     * moves, time passes, rooms are visited), doors that come and go, rooms that stop being rooms
+     * (a conclusion URGENT ⊑ Room must not keep itself), new and removed rooms, the threshold.
+     */
+    @ParameterizedTest(name = "{0}, seed {1}, {2} changes")
+    @CsvSource({"PELLET, 21, 40", "HERMIT, 22, 40", "PELLET, 24, 30"})
+    void rulesWithBuiltInsMatchOpenlletOnTheWholeOntology(String reasonerName, long seed, int steps) throws Exception {
+        random.setSeed(seed);
+        manager = OWLManager.createOWLOntologyManager();
+        factory = manager.getOWLDataFactory();
+        String urgency = URGENCY_TESTS.get((int) (seed % URGENCY_TESTS.size()));
+        ontology = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(RULES_SCHEMA.formatted(urgency)));
+        CourseMap map = new CourseMap();
+        map.load();
+        OWLReasonerFactory openllet = ReasonerRegistry.factory("PELLET");
+        ModularReasoner modular = new ModularReasoner(reasonerName, ReasonerRegistry.factory(reasonerName), ontology,
+                new SimpleConfiguration());
+        String run = reasonerName + " seed " + seed + " (" + urgency + ")";
+        modular.isConsistent();
+        assertTrue(modular.handlesRemovals(), () -> run + ": rules must be evaluated beside the modules: "
+                + modular.wholeBecause());
+        compare(openllet, modular, run + ", the loaded map");
+        int urgentSeen = 0;
+        for (int step = 0; step < steps; step++) {
+            List<OWLOntologyChange> changes = map.randomChanges();
+            manager.applyChanges(changes);
+            modular.flush();
+            String after = run + ", step " + step + " " + changes;
+            assertTrue(modular.handlesRemovals(), () -> "rules must stay beside the modules: " + modular.wholeBecause()
+                    + " after " + after);
+            compare(openllet, modular, after);
+            urgentSeen += modular.getInstances(cls("URGENT"), false).nodes().count() > 0 ? 1 : 0;
+        }
+        int seen = urgentSeen;
+        assertTrue(urgentSeen > steps / 4, () -> run + ": rooms must be urgent in many steps, not " + seen);
+        modular.dispose();
+    }
+
+    /** The topological map of {@link #RULES_SCHEMA}: corridors in a row, rooms with a door each, a robot, a clock. */
+    private final class CourseMap {
+        private final OWLNamedIndividual robot = named("robot");
+        private final List<OWLNamedIndividual> corridors = new ArrayList<>();
+        private final List<OWLNamedIndividual> doors = new ArrayList<>();
+        private int now = 1000;
+        private int threshold = 100;
+
+        void load() {
+            List<OWLAxiom> abox = new ArrayList<>(List.of(factory.getOWLClassAssertionAxiom(cls("Robot"), robot),
+                    value("now", robot, now), value("urgencyThreshold", robot, threshold)));
+            for (int i = 0; i < 3; i++) {
+                OWLNamedIndividual corridor = named("corridor" + i);
+                corridors.add(corridor);
+                abox.add(factory.getOWLClassAssertionAxiom(cls("Corridor"), corridor));
+                if (i > 0) {
+                    abox.addAll(door(corridors.get(i - 1), corridor));
+                }
+            }
+            for (int i = 0; i < 6; i++) {
+                abox.addAll(room("room" + i, now - random.nextInt(250)));
+            }
+            abox.add(edge("isIn", robot, corridors.get(0)));
+            individuals.add(robot);
+            individuals.addAll(corridors);
+            individuals.addAll(doors);
+            abox.add(factory.getOWLDifferentIndividualsAxiom(Set.copyOf(individuals)));
+            manager.addAxioms(ontology, abox.stream());
+        }
+
+        private List<OWLAxiom> door(OWLNamedIndividual one, OWLNamedIndividual other) {
+            OWLNamedIndividual door = named("door" + doors.size());
+            doors.add(door);
+            return List.of(factory.getOWLClassAssertionAxiom(cls("Door"), door), edge("hasDoor", one, door),
+                    edge("hasDoor", other, door));
+        }
+
+        private List<OWLAxiom> room(String name, int visited) {
+            OWLNamedIndividual room = named(name);
+            rooms.add(room);
+            individuals.add(room);
+            List<OWLAxiom> axioms = new ArrayList<>(List.of(factory.getOWLClassAssertionAxiom(cls("Room"), room),
+                    value("visitedAt", room, visited)));
+            axioms.addAll(door(room, corridors.get(random.nextInt(corridors.size()))));
+            return axioms;
+        }
+
+        private OWLAxiom value(String property, OWLNamedIndividual individual, int value) {
+            return factory.getOWLDataPropertyAssertionAxiom(factory.getOWLDataProperty(IRI.create(NS + property)),
+                    individual, value);
+        }
+
+        /** A replaced functional value: the old one goes, the new one comes. */
+        private List<OWLOntologyChange> replace(String property, OWLNamedIndividual individual, int value) {
+            List<OWLOntologyChange> changes = new ArrayList<>(ontology.dataPropertyAssertionAxioms(individual)
+                    .filter(a -> a.getProperty().asOWLDataProperty().getIRI().getShortForm().equals(property))
+                    .map(a -> (OWLOntologyChange) new RemoveAxiom(ontology, a)).toList());
+            changes.add(new AddAxiom(ontology, value(property, individual, value)));
+            return changes;
+        }
+
+        List<OWLOntologyChange> randomChanges() {
+            int kind = random.nextInt(100);
+            if (kind < 40) {
+                // The students' loop: the robot moves to a room or corridor, time passes, a room is visited.
+                OWLNamedIndividual place = random.nextBoolean() ? pick(rooms) : corridors.get(random.nextInt(3));
+                List<OWLOntologyChange> changes = new ArrayList<>(ontology.objectPropertyAssertionAxioms(robot)
+                        .map(a -> (OWLOntologyChange) new RemoveAxiom(ontology, a)).toList());
+                changes.add(new AddAxiom(ontology, edge("isIn", robot, place)));
+                now += 10 + random.nextInt(60);
+                changes.addAll(replace("now", robot, now));
+                if (rooms.contains(place)) {
+                    changes.addAll(replace("visitedAt", place, now));
+                }
+                return changes;
+            }
+            if (kind < 52) {
+                // A door closes (its edges go) or a new one opens between a room and a corridor.
+                List<OWLObjectPropertyAssertionAxiom> doorEdges = ontology.axioms(AxiomType.OBJECT_PROPERTY_ASSERTION)
+                        .filter(a -> a.getProperty().equals(property("hasDoor"))).toList();
+                if (random.nextBoolean() && !doorEdges.isEmpty()) {
+                    return List.of(new RemoveAxiom(ontology, doorEdges.get(random.nextInt(doorEdges.size()))));
+                }
+                OWLNamedIndividual door = pick(doors);
+                return List.of(new AddAxiom(ontology, edge("hasDoor", pick(rooms), door)));
+            }
+            if (kind < 64) {
+                // A room stops being a room, or is one again: URGENT must go with it, not keep itself.
+                return List.of(toggle(factory.getOWLClassAssertionAxiom(cls("Room"), pick(rooms))));
+            }
+            if (kind < 70) {
+                threshold = 50 + random.nextInt(150);
+                return replace("urgencyThreshold", robot, threshold);
+            }
+            if (kind < 76) {
+                // A second robot appears in a room, or goes (a defined class the rules read: Occupied).
+                OWLNamedIndividual other = named("robot2");
+                List<OWLOntologyChange> gone = ontology.referencingAxioms(other)
+                        .filter(a -> a.isOfType(AxiomType.ABoxAxiomTypes) && !a.isOfType(AxiomType.DIFFERENT_INDIVIDUALS))
+                        .map(a -> (OWLOntologyChange) new RemoveAxiom(ontology, a)).toList();
+                if (!gone.isEmpty()) {
+                    return gone;
+                }
+                return List.of(new AddAxiom(ontology, factory.getOWLClassAssertionAxiom(cls("Robot"), other)),
+                        new AddAxiom(ontology, edge("isIn", other, pick(rooms))),
+                        new AddAxiom(ontology, value("now", other, now + 500)));
+            }
+            if (kind < 84 && rooms.size() > 3) {
+                // A room is taken off the map (every assertion about it, its difference kept).
+                OWLNamedIndividual gone = rooms.remove(random.nextInt(rooms.size()));
+                return ontology.referencingAxioms(gone).filter(a -> a.isOfType(AxiomType.ABoxAxiomTypes)
+                                && !a.isOfType(AxiomType.DIFFERENT_INDIVIDUALS))
+                        .map(a -> (OWLOntologyChange) new RemoveAxiom(ontology, a)).toList();
+            }
+            if (kind < 90) {
+                // A new room, different from everyone (what the students' DISJOINT IND does).
+                List<OWLOntologyChange> changes = new ArrayList<>(room("room" + (individuals.size() + 100),
+                        now - random.nextInt(250)).stream().map(a -> (OWLOntologyChange) new AddAxiom(ontology, a))
+                        .toList());
+                individuals.addAll(doors.subList(doors.size() - 1, doors.size()));
+                changes.add(new AddAxiom(ontology, factory.getOWLDifferentIndividualsAxiom(Set.copyOf(individuals))));
+                return changes;
+            }
+            // Time passes alone.
+            now += 30 + random.nextInt(90);
+            return replace("now", robot, now);
+        }
+    }
+
     private void compare(OWLReasonerFactory reasonerFactory, ModularReasoner modular, String after) {
         OWLReasoner truth = reasonerFactory.createReasoner(ontology);
         try {
@@ -285,7 +507,15 @@ class ModularEquivalenceTest {
                         names(modular.getInstances(owlClass, false).entities()),
                         () -> "instances of " + owlClass + " after " + after);
             }
+            List<OWLObjectProperty> ruleProperties = ontology.axioms(AxiomType.SWRL_RULE)
+                    .flatMap(rule -> rule.objectPropertiesInSignature())
+                    .filter(p -> !p.getIRI().toString().startsWith("http://www.w3.org/2002/07/owl#")).distinct().toList();
             for (OWLNamedIndividual individual : ontology.individualsInSignature(Imports.INCLUDED).toList()) {
+                for (OWLObjectProperty property : ruleProperties) {
+                    assertEquals(names(truth.getObjectPropertyValues(individual, property).entities()),
+                            names(modular.getObjectPropertyValues(individual, property).entities()),
+                            () -> property + " of " + individual + " after " + after);
+                }
                 for (boolean direct : new boolean[] {false, true}) {
                     assertEquals(names(truth.getTypes(individual, direct).entities()),
                             names(modular.getTypes(individual, direct).entities()),

@@ -23,10 +23,14 @@ class ModularPlanTest {
     private static final String NS = "http://www.example.org/shapes#";
 
     private ModularReasoner reasoned(String axioms) throws Exception {
+        return reasoned(axioms, "HERMIT");
+    }
+
+    private ModularReasoner reasoned(String axioms, String reasonerName) throws Exception {
         OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
         OWLOntology ontology = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(
                 "Prefix(:=<" + NS + ">) Ontology(<" + NS + "o> " + axioms + ")"));
-        ModularReasoner reasoner = new ModularReasoner("HERMIT", ReasonerRegistry.factory("HERMIT"), ontology,
+        ModularReasoner reasoner = new ModularReasoner(reasonerName, ReasonerRegistry.factory(reasonerName), ontology,
                 new SimpleConfiguration());
         reasoner.isConsistent();
         return reasoner;
@@ -124,10 +128,45 @@ class ModularPlanTest {
     }
 
     @Test
-    void rulesMakeItWholeAndThePlanSaysSo() throws Exception {
+    void rulesBesideAFunctionalPropertyMakeItWholeAndThePlanSaysWhy() throws Exception {
         ModularReasoner reasoner = reasoned(depot(3) + """
                 DLSafeRule(Body(ClassAtom(:Agent Variable(<urn:v#x>))) Head(ClassAtom(:Robot Variable(<urn:v#x>))))
                 """);
-        assertEquals("on the whole ontology: SWRL rules", reasoner.plan().describe());
+        assertEquals("on the whole ontology: SWRL rules with an axiom that can make two individuals one:"
+                + " FunctionalObjectProperty(<" + NS + "locatedAt>)", reasoner.plan().describe());
+    }
+
+    /** The depot without its functional property: Horn, so the rules are evaluated beside the modules. */
+    private static String hornDepot(String rules) {
+        return depot(3).replace("FunctionalObjectProperty(:locatedAt)", "") + rules;
+    }
+
+    @Test
+    void rulesOverAHornSchemaStayBesideTheModules() throws Exception {
+        ModularReasoner reasoner = reasoned(hornDepot("""
+                DLSafeRule(Body(ClassAtom(:Agent Variable(<urn:v#x>)) ObjectPropertyAtom(:locatedAt Variable(<urn:v#x>)
+                    Variable(<urn:v#p>))) Head(ClassAtom(:Placed Variable(<urn:v#p>))))
+                """));
+        assertTrue(reasoner.plan().modular(), reasoner.plan()::describe);
+        // Each aisle with its robot (BusyPlace observes locatedAt), the zone, the depot: the rule ties nothing.
+        assertEquals(5, reasoner.plan().modules(), reasoner.plan()::describe);
+        OWLDataFactory factory = OWLManager.getOWLDataFactory();
+        assertEquals(3, reasoner.getInstances(factory.getOWLClass(IRI.create(NS + "Placed")), false).nodes().count());
+    }
+
+    @Test
+    void rulesThatCannotBeEvaluatedBesideTheModulesSayWhy() throws Exception {
+        String rule = "DLSafeRule(Body(ObjectPropertyAtom(:%s Variable(<urn:v#x>) Variable(<urn:v#y>)))"
+                + " Head(ObjectPropertyAtom(:%s Variable(<urn:v#x>) Variable(<urn:v#y>))))\n";
+        assertTrue(reasoned(hornDepot(String.format(rule, "partOf", "near"))).plan().describe()
+                .startsWith("on the whole ontology: SWRL rules over partOf, whose edges TransitiveObjectProperty"));
+        assertTrue(reasoned(hornDepot(String.format(rule, "near", "near"))).plan().describe()
+                .startsWith("on the whole ontology: SWRL rules whose conclusions feed one another"));
+        // Openllet on the whole ontology: HermiT refuses built-ins.
+        assertTrue(reasoned(hornDepot("""
+                DLSafeRule(Body(DataPropertyAtom(:name Variable(<urn:v#x>) Variable(<urn:v#n>))
+                    BuiltInAtom(<http://www.w3.org/2003/11/swrlb#stringLength> Variable(<urn:v#l>) Variable(<urn:v#n>)))
+                    Head(ClassAtom(:Named Variable(<urn:v#x>))))
+                """), "PELLET").plan().describe().contains("built-in http://www.w3.org/2003/11/swrlb#stringLength"));
     }
 }

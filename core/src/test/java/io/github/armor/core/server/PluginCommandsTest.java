@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.armor.core.ArmorCore;
+import io.github.armor.core.api.ListResponse;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.ExitCode;
@@ -186,7 +187,7 @@ class PluginCommandsTest {
         assertEquals(ExitCode.REFERENCE_MOUNTED.code(), refused.exitCode());
         ok(core, "holder", "map", "UNMOUNT");
 
-        ArmorCore.ListResponse list = core.executeList(List.of(
+        ListResponse list = core.executeList(List.of(
                 Directive.of("c", "map", "ADD", "MARK", "IND", "robot2", "Robot"),
                 Directive.of("c", "map", "QUERY", "NOSUCH", "")));
         assertFalse(list.success());
@@ -242,7 +243,7 @@ class PluginCommandsTest {
     @Test
     void aLoopingPluginInAListIsStoppedAndTheWholeListUndone() {
         ArmorCore core = core(30_000, null);
-        ArmorCore.ListResponse list = core.executeList(List.of(
+        ListResponse list = core.executeList(List.of(
                 Directive.of("c", "map", "ADD", "MARK", "IND", "robot2", "Robot"),
                 Directive.of("c", "map", "ADD", "MARK", "LOOPING", "robot3", "Robot")));
         assertFalse(list.success());

@@ -3,7 +3,7 @@ package io.github.armor.core.server;
 
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
-import io.github.armor.core.command.DirectiveLog;
+import io.github.armor.core.log.DirectiveLog;
 import java.util.List;
 import java.util.logging.Level;
 import org.slf4j.LoggerFactory;

@@ -3,11 +3,9 @@ package io.github.armor.pddl;
 
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
-import io.github.armor.core.command.CommandContext;
-import io.github.armor.core.command.CommandGroup;
-import io.github.armor.core.command.CommandTable;
-import io.github.armor.core.reference.AllowedPaths;
-import io.github.armor.core.reference.WritablePaths;
+import io.github.armor.core.spi.CommandGroup;
+import io.github.armor.core.spi.CommandTable;
+import io.github.armor.core.spi.Context;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -31,25 +29,24 @@ public final class PddlCommands implements CommandGroup {
         table.command("SAVE PDDL PROBLEM").args("mapping path or text", "path")
                 .summary("write that PDDL problem to a file inside write_dirs")
                 .onReference(c -> {
-                    WritablePaths writable = WritablePaths.of(c.config());
-                    Path target = writable.check(c.arg(1));
+                    Path target = c.paths().writable(c.arg(1));
                     String text = problem(c).text();
-                    writable.write(target, out -> out.write(text.getBytes(StandardCharsets.UTF_8)));
+                    c.paths().write(target, out -> out.write(text.getBytes(StandardCharsets.UTF_8)));
                     return c.ok();
                 });
     }
 
-    private static PddlProblem problem(CommandContext c) {
-        return new ProblemGenerator(c.reference()).generate(Mapping.parse(mappingText(c, c.arg(0))));
+    private static PddlProblem problem(Context c) {
+        return new ProblemGenerator(c.knowledge()).generate(Mapping.parse(mappingText(c, c.arg(0))));
     }
 
     /** The mapping itself (text holding a line break or starting with '{'), or the file it names. */
-    static String mappingText(CommandContext c, String argument) {
+    static String mappingText(Context c, String argument) {
         String trimmed = argument.trim();
         if (trimmed.startsWith("{") || trimmed.contains("\n")) {
             return argument;
         }
-        Path file = AllowedPaths.forReading(c.config()).check(trimmed);
+        Path file = c.paths().readable(trimmed);
         try {
             if (!Files.isRegularFile(file)) {
                 throw new ArmorException(ExitCode.LOAD_FAILED, "mapping file " + file + " does not exist");

@@ -3,8 +3,7 @@ package io.github.armor.pddl;
 
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
-import io.github.armor.core.command.Inferences;
-import io.github.armor.core.reference.Reference;
+import io.github.armor.core.spi.Knowledge;
 import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.Collection;
@@ -20,6 +19,7 @@ import java.util.SortedSet;
 import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
+import java.util.stream.Stream;
 import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.IRI;
 import org.semanticweb.owlapi.model.OWLClass;
@@ -42,9 +42,9 @@ import org.semanticweb.owlapi.vocab.OWL2Datatype;
  * The caller holds the reference.
  */
 final class ProblemGenerator {
-    private final Reference reference;
+    private final Knowledge reference;
 
-    ProblemGenerator(Reference reference) {
+    ProblemGenerator(Knowledge reference) {
         this.reference = reference;
     }
 
@@ -73,7 +73,7 @@ final class ProblemGenerator {
 
         List<RawFact> init = new ArrayList<>();
         for (Named<OWLClass> predicate : unary) {
-            for (OWLNamedIndividual instance : sorted(Inferences.instances(reference, predicate.entity(), false))) {
+            for (OWLNamedIndividual instance : sorted(reference.instances(predicate.entity(), false))) {
                 if (!typed || typeOf.containsKey(instance)) {
                     init.add(new RawFact(predicate.pddl(), List.of(instance)));
                 }
@@ -138,10 +138,10 @@ final class ProblemGenerator {
 
     /** The entity a name of the mapping means; 224 when the reference does not know it. */
     private <E extends OWLEntity> E known(EntityType<E> type, String name, String where) {
-        E entity = reference.names().entity(type, name);
-        if (!reference.names().knows(entity)) {
+        E entity = reference.entity(type, name);
+        if (!reference.knows(entity)) {
             throw new ArmorException(ExitCode.UNKNOWN_NAME, where + " names the "
-                    + reference.names().describeUnknown(type, name) + ", which reference '" + reference.name()
+                    + reference.describeUnknown(type, name) + ", which reference '" + reference.name()
                     + "' does not know");
         }
         return entity;
@@ -154,12 +154,12 @@ final class ProblemGenerator {
     private Map<OWLNamedIndividual, String> objectTypes(List<Named<OWLClass>> types) {
         Map<OWLClass, Set<OWLClass>> superClasses = new HashMap<>();
         for (Named<OWLClass> type : types) {
-            superClasses.put(type.entity(), Inferences.inferred(reference,
-                    r -> r.getSuperClasses(type.entity(), false).entities()).collect(Collectors.toSet()));
+            superClasses.put(type.entity(), reference.inferred(r -> r.getSuperClasses(type.entity(), false)
+                    .entities()).collect(Collectors.toSet()));
         }
         Map<OWLNamedIndividual, List<Named<OWLClass>>> candidates = new HashMap<>();
         for (Named<OWLClass> type : types) {
-            for (OWLNamedIndividual instance : Inferences.instances(reference, type.entity(), false)) {
+            for (OWLNamedIndividual instance : reference.instances(type.entity(), false)) {
                 candidates.computeIfAbsent(instance, i -> new ArrayList<>()).add(type);
             }
         }
@@ -175,17 +175,17 @@ final class ProblemGenerator {
     }
 
     private Set<OWLNamedIndividual> objectValues(OWLObjectProperty property, OWLNamedIndividual subject) {
-        return Inferences.union(
-                EntitySearcher.getObjectPropertyValues(subject, property, Inferences.closure(reference))
+        return union(
+                EntitySearcher.getObjectPropertyValues(subject, property, reference.closure())
                         .filter(i -> i.isNamed()).map(i -> i.asOWLNamedIndividual()),
-                Inferences.inferred(reference, r -> r.getObjectPropertyValues(subject, property).entities()));
+                reference.inferred(r -> r.getObjectPropertyValues(subject, property).entities()));
     }
 
     /** The one numeric value of a fluent's data property, or null when it has none. */
     private BigDecimal numericValue(Named<OWLDataProperty> fluent, OWLNamedIndividual subject) {
-        Set<OWLLiteral> literals = Inferences.union(
-                EntitySearcher.getDataPropertyValues(subject, fluent.entity(), Inferences.closure(reference)),
-                Inferences.inferred(reference, r -> r.getDataPropertyValues(subject, fluent.entity()).stream()));
+        Set<OWLLiteral> literals = union(
+                EntitySearcher.getDataPropertyValues(subject, fluent.entity(), reference.closure()),
+                reference.inferred(r -> r.getDataPropertyValues(subject, fluent.entity()).stream()));
         Set<BigDecimal> numbers = new TreeSet<>();
         for (OWLLiteral literal : literals) {
             IRI datatype = literal.getDatatype().getIRI();
@@ -232,7 +232,7 @@ final class ProblemGenerator {
     private List<RawFact> required(Mapping.ForAll forAll, boolean typed, Map<OWLNamedIndividual, String> typeOf) {
         OWLClass owlClass = known(EntityType.CLASS, forAll.className(), "the mapping's goal forall");
         List<RawFact> facts = new ArrayList<>();
-        for (OWLNamedIndividual instance : sorted(Inferences.instances(reference, owlClass, false))) {
+        for (OWLNamedIndividual instance : sorted(reference.instances(owlClass, false))) {
             if (typed && !typeOf.containsKey(instance)) {
                 throw notAnObject(instance, "goal forall " + forAll.className());
             }
@@ -261,5 +261,11 @@ final class ProblemGenerator {
 
     private static List<OWLNamedIndividual> sorted(Collection<OWLNamedIndividual> individuals) {
         return individuals.stream().distinct().sorted(Comparator.comparing(OWLNamedIndividual::getIRI)).toList();
+    }
+
+    /** Asserted and inferred answers together, each once, in the order found. */
+    @SafeVarargs
+    private static <T> Set<T> union(Stream<? extends T>... parts) {
+        return Stream.of(parts).flatMap(part -> part).collect(Collectors.toCollection(LinkedHashSet::new));
     }
 }

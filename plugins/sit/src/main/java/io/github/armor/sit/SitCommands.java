@@ -4,15 +4,15 @@ package io.github.armor.sit;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
-import io.github.armor.core.command.CommandContext;
-import io.github.armor.core.command.CommandGroup;
-import io.github.armor.core.command.CommandTable;
-import io.github.armor.core.command.Inferences;
-import io.github.armor.core.reference.ReasonerRegistry;
-import io.github.armor.core.reference.Reference;
+import io.github.armor.core.spi.CommandGroup;
+import io.github.armor.core.spi.CommandTable;
+import io.github.armor.core.spi.Context;
+import io.github.armor.core.spi.Knowledge;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.IRI;
@@ -47,15 +47,15 @@ public final class SitCommands implements CommandGroup {
                         + " (one JSON object each)")
                 .query(c -> c.ok(SceneHierarchy.of(new CoreReference(c)).stream()
                         .map(p -> SceneJson.sceneClass(p.owlClass(), p.definition(), p.parents(), p.equivalents(),
-                                c.render()::entity).toString())
+                                c::render).toString())
                         .toList()));
         table.command("QUERY SIT RECENT")
                 .summary("the last scenes of this reference in this session, each recognition explained (one JSON"
                         + " object each, newest first)")
-                .query(c -> c.ok(recent.of(c.reference()).stream().map(Object::toString).toList()));
+                .query(c -> c.ok(recent.of(c.knowledge().identity()).stream().map(Object::toString).toList()));
     }
 
-    private Response scene(CommandContext c) {
+    private Response scene(Context c) {
         SceneTeacher.Outcome outcome;
         try {
             double threshold = Scene.learningThreshold(c.arg(0));
@@ -70,90 +70,87 @@ public final class SitCommands implements CommandGroup {
             }, e.getMessage() + "; nothing changed");
         }
         if (!c.replaying()) {
-            recent.record(c.reference(), SceneJson.outcome(outcome, c.directive().clientName(),
-                    System.currentTimeMillis(), c.render()::entity));
+            recent.record(c.knowledge().identity(), SceneJson.outcome(outcome, c.directive().clientName(),
+                    System.currentTimeMillis(), c::render));
         }
         List<String> answer = new ArrayList<>();
-        outcome.learned().ifPresent(learned -> answer.add("learned " + c.render().entity(learned)));
+        outcome.learned().ifPresent(learned -> answer.add("learned " + c.render(learned)));
         for (SceneTeacher.Recognition recognition : outcome.recognitions()) {
-            answer.add("recognised " + c.render().entity(recognition.owlClass()) + " " + recognition.similarity());
+            answer.add("recognised " + c.render(recognition.owlClass()) + " " + recognition.similarity());
         }
         return c.ok(answer);
     }
 
-    /** A reference as the scene logic sees it, over the core's command context. */
+    /** A reference as the scene logic sees it, over the core's plugin context. */
     private static final class CoreReference implements SceneReference {
-        private final Reference reference;
+        private final Context context;
+        private final Knowledge knowledge;
 
-        CoreReference(CommandContext context) {
-            this.reference = context.reference();
+        CoreReference(Context context) {
+            this.context = context;
+            this.knowledge = context.knowledge();
         }
 
         @Override
         public OWLOntology ontology() {
-            return reference.ontology();
+            return knowledge.ontology();
         }
 
         @Override
         public OWLDataFactory factory() {
-            return reference.factory();
+            return knowledge.factory();
         }
 
         @Override
         public IRI iri(EntityType<?> type, String name) {
-            return reference.names().iri(type, name);
+            return knowledge.iri(type, name);
         }
 
         @Override
         public void enact(List<OWLOntologyChange> changes) {
-            // APPLY first, so that the transaction keeps the waiting changes as they were: a
-            // rollback restores them and undoes the scene's, which were applied on their own.
-            reference.applyPending();
-            reference.change(changes);
-            reference.applyPending();
+            context.enact(changes);
         }
 
         @Override
         public Set<OWLClass> types(OWLNamedIndividual individual) {
-            if (reference.settings().bufferedReasoner()) {
-                reference.synchroniseReasoner();
-            }
-            return named(EntitySearcher.getTypes(individual, Inferences.closure(reference)),
-                    Inferences.inferred(reference, r -> r.getTypes(individual, false).entities()));
+            knowledge.synchroniseReasoner();
+            return named(EntitySearcher.getTypes(individual, knowledge.closure()),
+                    knowledge.inferred(r -> r.getTypes(individual, false).entities()));
         }
 
         @Override
         public boolean consistent() {
-            return reference.isConsistent();
+            return knowledge.consistent();
         }
 
         @Override
         public OWLReasonerFactory reasonerFactory() {
-            return ReasonerRegistry.factory(reference.reasonerName());
+            return knowledge.reasonerFactory();
         }
 
         @Override
         public Object identity() {
-            return reference;
+            return knowledge.identity();
         }
 
         @Override
         public Set<OWLClass> superClasses(OWLClass owlClass) {
-            return named(EntitySearcher.getSuperClasses(owlClass, Inferences.closure(reference)),
-                    Inferences.inferred(reference, r -> r.getSuperClasses(owlClass, false).entities()));
+            return named(EntitySearcher.getSuperClasses(owlClass, knowledge.closure()),
+                    knowledge.inferred(r -> r.getSuperClasses(owlClass, false).entities()));
         }
 
         @Override
         public Set<OWLClass> equivalentClasses(OWLClass owlClass) {
-            Set<OWLClass> equivalents = named(EntitySearcher.getEquivalentClasses(owlClass, Inferences.closure(reference)),
-                    Inferences.inferred(reference, r -> r.getEquivalentClasses(owlClass).entities()));
+            Set<OWLClass> equivalents = named(EntitySearcher.getEquivalentClasses(owlClass, knowledge.closure()),
+                    knowledge.inferred(r -> r.getEquivalentClasses(owlClass).entities()));
             equivalents.remove(owlClass);
             return equivalents;
         }
 
+        /** The named classes among the asserted ones, then the inferred ones, each once. */
         private static Set<OWLClass> named(Stream<OWLClassExpression> asserted, Stream<OWLClass> inferred) {
-            return Inferences.union(asserted.filter(e -> !e.isAnonymous()).map(OWLClassExpression::asOWLClass), inferred);
+            return Stream.concat(asserted.filter(e -> !e.isAnonymous()).map(OWLClassExpression::asOWLClass), inferred)
+                    .collect(Collectors.toCollection(LinkedHashSet::new));
         }
-
     }
 }

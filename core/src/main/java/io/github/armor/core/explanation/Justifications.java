@@ -1,0 +1,244 @@
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+package io.github.armor.core.explanation;
+
+import io.github.armor.core.reference.ReasonerCalls;
+import io.github.armor.core.reference.ReasonerRegistry;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.stream.Collectors;
+import org.semanticweb.owl.explanation.api.Explanation;
+import org.semanticweb.owl.explanation.api.ExplanationException;
+import org.semanticweb.owl.explanation.api.ExplanationGenerator;
+import org.semanticweb.owl.explanation.api.ExplanationGeneratorFactory;
+import org.semanticweb.owl.explanation.api.ExplanationGeneratorInterruptedException;
+import org.semanticweb.owl.explanation.api.NotEntailedException;
+import org.semanticweb.owl.explanation.api.ExplanationProgressMonitor;
+import org.semanticweb.owl.explanation.impl.blackbox.Configuration;
+import org.semanticweb.owl.explanation.impl.blackbox.DivideAndConquerContractionStrategy;
+import org.semanticweb.owl.explanation.impl.blackbox.InitialEntailmentCheckStrategy;
+import org.semanticweb.owl.explanation.impl.blackbox.StructuralTypePriorityExpansionStrategy;
+import org.semanticweb.owl.explanation.impl.blackbox.checker.BlackBoxExplanationGeneratorFactory;
+import org.semanticweb.owl.explanation.impl.blackbox.checker.InconsistentOntologyExplanationGeneratorFactory;
+import org.semanticweb.owl.explanation.impl.blackbox.checker.SatisfiabilityEntailmentCheckerFactory;
+import org.semanticweb.owlapi.apibinding.OWLManager;
+import org.semanticweb.owlapi.model.AxiomType;
+import org.semanticweb.owlapi.model.OWLAxiom;
+import org.semanticweb.owlapi.model.OWLEntity;
+import org.semanticweb.owlapi.model.OWLIndividual;
+import org.semanticweb.owlapi.model.OWLIndividualAxiom;
+import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.OWLPrimitive;
+import org.semanticweb.owlapi.model.parameters.Imports;
+import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
+import uk.ac.manchester.cs.owlapi.modularity.ModuleType;
+import uk.ac.manchester.cs.owlapi.modularity.SyntacticLocalityModuleExtractor;
+
+/**
+ * Finds justifications (minimal sets of the ontology's axioms that entail a fact) with the OWL
+ * API's explanation library (owlexplanation: black-box expansion and contraction, then a hitting
+ * set tree for more than one), searched first on a small part of the ontology:
+ * <ul>
+ *   <li>for a fact about individuals, the schema plus the assertions of the individuals the
+ *   fact names, then also of their neighbours (linked by property assertions, sameAs,
+ *   differentFrom), then up to 3 links away, then the whole connected part, each cut down to the
+ *   syntactic locality (STAR) module of the fact's signature, until one yields a justification;</li>
+ *   <li>for a subsumption, the STAR module of the two classes.</li>
+ * </ul>
+ * A justification is a subset of the axioms searched that the reasoner finds entailing the fact
+ * and minimal, so whatever part was searched it is one of the whole ontology's. Only when that
+ * part yields none (a link this cut does not follow) is the whole ontology searched.
+ *
+ * <p>The search shares the directive's reasoner time limit: past it, it stops and what was found
+ * is answered marked partial (never a set that was not checked).
+ */
+final class Justifications {
+    /** The justifications found (each sorted for a stable answer) and what the search ran on. */
+    record Found(List<Set<OWLAxiom>> sets, boolean partial, int searchedAxioms, int ontologyAxioms, String reasoner) {}
+
+    // ELK answers only OWL 2 EL entailments and silently drops the rest: the checks that make a
+    // justification minimal need a complete reasoner, so an ELK reference is explained by HermiT.
+    private static final String FALLBACK_REASONER = "HERMIT";
+    private static final int UNBOUNDED = Integer.MAX_VALUE;
+    // Links from the fact's individuals whose assertions are searched, in turn.
+    private static final int[] RADII = {1, 2, 4, UNBOUNDED};
+
+    private Justifications() {}
+
+    /** The reasoner the explanations of a reference with this reasoner are computed with. */
+    static String explainingReasoner(String referenceReasoner) {
+        return "ELK".equals(referenceReasoner) ? FALLBACK_REASONER : referenceReasoner;
+    }
+
+    /**
+     * Up to {@code limit} justifications of {@code fact} in {@code ontology}, by {@code deadlineNanos}.
+     * {@code individuals} are the individuals the fact is about (none for a subsumption).
+     */
+    static Found of(OWLOntology ontology, OWLAxiom fact, Set<OWLNamedIndividual> individuals, int limit,
+                    String reasonerName, long deadlineNanos) {
+        String reasoner = explainingReasoner(reasonerName);
+        OWLReasonerFactory factory = ReasonerRegistry.factory(reasoner);
+        Set<OWLAxiom> all = logicalAxioms(ontology);
+        // Near the fact first: most facts follow from the assertions of their individuals and of
+        // their neighbours; a robot's map is one connected ABox, whose module is nearly all of it.
+        Found found = null;
+        int searched = -1;
+        for (int radius : individuals.isEmpty() ? new int[] {UNBOUNDED} : RADII) {
+            Set<OWLAxiom> module = module(ontology, fact, individuals, all, radius);
+            if (module.size() == searched) {
+                continue; // the part did not grow: nothing new to search
+            }
+            searched = module.size();
+            found = search(fact, module, limit, factory, deadlineNanos, all.size(), reasoner, false);
+            if (!found.sets().isEmpty() || found.partial()) {
+                return found;
+            }
+        }
+        if (searched < all.size()) {
+            found = search(fact, all, limit, factory, deadlineNanos, all.size(), reasoner, false);
+        }
+        return found;
+    }
+
+    /** Up to {@code limit} sets of axioms that make {@code ontology} inconsistent. */
+    static Found ofInconsistency(OWLOntology ontology, int limit, String reasonerName, long deadlineNanos) {
+        String reasoner = explainingReasoner(reasonerName);
+        Set<OWLAxiom> all = logicalAxioms(ontology);
+        OWLAxiom contradiction = ontology.getOWLOntologyManager().getOWLDataFactory().getOWLSubClassOfAxiom(
+                ontology.getOWLOntologyManager().getOWLDataFactory().getOWLThing(),
+                ontology.getOWLOntologyManager().getOWLDataFactory().getOWLNothing());
+        return search(contradiction, all, limit, ReasonerRegistry.factory(reasoner), deadlineNanos, all.size(),
+                reasoner, true);
+    }
+
+    private static Set<OWLAxiom> logicalAxioms(OWLOntology ontology) {
+        return ontology.logicalAxioms(Imports.INCLUDED).map(a -> (OWLAxiom) a.getAxiomWithoutAnnotations())
+                .collect(Collectors.toCollection(LinkedHashSet::new));
+    }
+
+    /**
+     * The part of the ontology searched first: the schema and the assertions of the fact's
+     * individuals' connected part of the ABox, then the STAR module of the fact's signature in it.
+     */
+    static Set<OWLAxiom> module(OWLOntology ontology, OWLAxiom fact, Set<OWLNamedIndividual> individuals,
+                                Set<OWLAxiom> all, int radius) {
+        Set<OWLAxiom> candidates = new LinkedHashSet<>();
+        for (OWLAxiom axiom : all) {
+            if (!axiom.isOfType(AxiomType.ABoxAxiomTypes)) {
+                candidates.add(axiom);
+            }
+        }
+        candidates.addAll(connectedAssertions(ontology, individuals, radius));
+        Set<OWLEntity> signature = fact.signature().collect(Collectors.toSet());
+        SyntacticLocalityModuleExtractor extractor = new SyntacticLocalityModuleExtractor(
+                OWLManager.createOWLOntologyManager(), candidates.stream(), ModuleType.STAR);
+        return extractor.extract(signature).stream().filter(OWLAxiom::isLogicalAxiom)
+                .collect(Collectors.toCollection(LinkedHashSet::new));
+    }
+
+    /**
+     * The assertions about the individuals at most {@code radius - 1} links from {@code start}
+     * (links: assertions between individuals), so {@code radius} links reach their neighbours.
+     */
+    private static Set<OWLAxiom> connectedAssertions(OWLOntology ontology, Set<OWLNamedIndividual> start,
+                                                     int radius) {
+        Set<OWLAxiom> assertions = new LinkedHashSet<>();
+        Map<OWLIndividual, Integer> distance = new HashMap<>();
+        start.forEach(i -> distance.put(i, 0));
+        Deque<OWLIndividual> queue = new ArrayDeque<>(start);
+        while (!queue.isEmpty()) {
+            OWLIndividual individual = queue.poll();
+            int next = distance.get(individual) + 1;
+            if (next > radius) {
+                continue;
+            }
+            ontology.referencingAxioms((OWLPrimitive) individual, Imports.INCLUDED)
+                    .filter(a -> a.isOfType(AxiomType.ABoxAxiomTypes))
+                    .forEach(axiom -> {
+                        if (!assertions.add(axiom.getAxiomWithoutAnnotations())) {
+                            return;
+                        }
+                        if (axiom instanceof OWLIndividualAxiom || axiom.isOfType(AxiomType.OBJECT_PROPERTY_ASSERTION,
+                                AxiomType.NEGATIVE_OBJECT_PROPERTY_ASSERTION)) {
+                            axiom.individualsInSignature().filter(i -> distance.putIfAbsent(i, next) == null)
+                                    .forEach(queue::add);
+                        }
+                    });
+        }
+        return assertions;
+    }
+
+    private static Found search(OWLAxiom fact, Set<OWLAxiom> axioms, int limit, OWLReasonerFactory factory,
+                                long deadlineNanos, int ontologySize, String reasoner, boolean inconsistency) {
+        List<Explanation<OWLAxiom>> found = new CopyOnWriteArrayList<>();
+        ExplanationProgressMonitor<OWLAxiom> monitor = new ExplanationProgressMonitor<>() {
+            @Override
+            public void foundExplanation(ExplanationGenerator<OWLAxiom> generator, Explanation<OWLAxiom> explanation,
+                                         Set<Explanation<OWLAxiom>> all) {
+                found.add(explanation);
+            }
+
+            @Override
+            public boolean isCancelled() {
+                return System.nanoTime() > deadlineNanos || Thread.currentThread().isInterrupted();
+            }
+        };
+        long leftMs = Math.max(1, (deadlineNanos - System.nanoTime()) / 1_000_000);
+        ExplanationGeneratorFactory<OWLAxiom> generators = inconsistency
+                ? new InconsistentOntologyExplanationGeneratorFactory(factory,
+                OWLManager.getOWLDataFactory(), OWLManager::createOWLOntologyManager, leftMs)
+                : new BlackBoxExplanationGeneratorFactory<>(new Configuration<>(
+                new SatisfiabilityEntailmentCheckerFactory(factory, OWLManager::createOWLOntologyManager),
+                // PERFORM: a part of the ontology that does not entail the fact answers none (and the
+                // whole is searched) instead of a wrong set. The library's shorter constructors leave
+                // this strategy unset (owlexplanation 5.0.0).
+                new StructuralTypePriorityExpansionStrategy<>(InitialEntailmentCheckStrategy.PERFORM,
+                        OWLManager::createOWLOntologyManager),
+                new DivideAndConquerContractionStrategy<>(), monitor, OWLManager::createOWLOntologyManager));
+        boolean partial = false;
+        Set<Explanation<OWLAxiom>> complete = Set.of();
+        try {
+            complete = ReasonerCalls.run(null, deadlineNanos, () -> {
+                try {
+                    return generators.createExplanationGenerator(axioms, monitor).getExplanations(fact, limit);
+                } catch (ExplanationGeneratorInterruptedException e) {
+                    throw new SearchStopped(e);
+                } catch (NotEntailedException e) {
+                    return Set.<Explanation<OWLAxiom>>of();
+                } catch (ExplanationException e) {
+                    throw new IllegalStateException("the explanation library failed: " + e.getMessage(), e);
+                }
+            });
+        } catch (ReasonerCalls.Overran | SearchStopped e) {
+            partial = true;
+        }
+        if (!partial && monitor.isCancelled()) {
+            partial = complete.size() < limit;
+        }
+        Set<Set<OWLAxiom>> sets = new LinkedHashSet<>();
+        for (Explanation<OWLAxiom> explanation : partial ? found : complete) {
+            if (!explanation.isEmpty() && sets.size() < limit) {
+                sets.add(Set.copyOf(explanation.getAxioms()));
+            }
+        }
+        List<Set<OWLAxiom>> ordered = new ArrayList<>(sets);
+        ordered.sort(Comparator.<Set<OWLAxiom>>comparingInt(Set::size).thenComparing(s -> s.stream()
+                .map(Object::toString).sorted().collect(Collectors.joining("\n"))));
+        return new Found(ordered, partial, axioms.size(), ontologySize, reasoner);
+    }
+
+    /** The explanation library gave up (interrupted at the deadline): what was found so far stands. */
+    private static final class SearchStopped extends RuntimeException {
+        SearchStopped(Throwable cause) {
+            super(cause);
+        }
+    }
+}
