@@ -23,7 +23,7 @@ import pytest
 REPO = pathlib.Path(__file__).resolve().parents[1]
 JAR = pathlib.Path(os.environ.get('ARMOR_CORE_JAR')
                    or REPO / 'install' / 'armor_core' / 'armor-core.jar')
-QUERIES = pathlib.Path('core/src/main/java/io/github/armor/core/command/Queries.java')
+QUERIES = pathlib.Path('core/src/main/java/io/github/armor/core/command/builtin/Queries.java')
 REGISTRATION = '''
         table.command("QUERY IND COUNT").args("class")
                 .summary("the instances of the class, counted")
@@ -59,7 +59,9 @@ def _register_and_build(scratch: pathlib.Path) -> pathlib.Path:
     queries = scratch / QUERIES
     text = queries.read_text()
     anchor = '        registerIndividualQueries(table);\n'
-    assert anchor in text
+    imports = 'import io.github.armor.core.command.CommandTable;\n'
+    assert anchor in text and imports in text
+    text = text.replace(imports, imports + 'import io.github.armor.core.command.Face;\n')
     queries.write_text(text.replace(anchor, anchor + REGISTRATION))
     jar = scratch / 'jar' / 'armor-core.jar'
     classes = scratch / 'classes'

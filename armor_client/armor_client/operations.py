@@ -17,7 +17,7 @@ is written once for the sync and the asyncio client alike.
 
 import enum
 import json
-from typing import Any, List, Optional, Sequence, Union
+from typing import Any, Dict, List, Optional, Sequence, Union
 
 from armor_client.answers import (  # noqa: F401 (the answer types, imported from here before)
     AcknowledgedChange, Answers, ChangeHistory, Consistency, Parser, SparqlRows, Words,

@@ -16,7 +16,6 @@ import pytest
 
 # Keyword arguments that make a method send its other variants (MOUNTED, INFERENCE, OFF...).
 VARIANTS = {
-    'learn_scene': [{'elements': [('cup', [0.0, 0.0, 0.0])], 'threshold': 0.5}],
     'load_file': [{}, {'mount': True}], 'load_web': [{}, {'mount': True}],
     'save': [{}, {'inferences': True}], 'log_to_screen': [{'on': True}, {'on': False}],
     'log_to_file': [{'path': '/tmp/armor.log'}, {'path': None}],
