@@ -34,7 +34,7 @@ ROBOTICS = REPO / 'ontologies' / 'robotics.owl'
 
 def start(scratch: pathlib.Path, source: pathlib.Path, namespace: str):
     """A node of the given checkout (its Python packages and its installed core jar)."""
-    from armor_service.launch import ArmorNodeProcess
+    from armor_service.node_harness import ArmorNodeProcess
     env = dict(os.environ)
     if source != REPO:
         packages = ':'.join(str(source / p) for p in ('armor_service', 'armor_contract',

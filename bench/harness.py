@@ -148,7 +148,7 @@ class BenchNode:
     def __init__(self, scratch: pathlib.Path, snapshot: CoreSnapshot,
                  parameters: Optional[Dict[str, str]] = None, preload_robotics: bool = False):
         from armor_client import ArmorTransport
-        from armor_service.launch import ArmorNodeProcess
+        from armor_service.node_harness import ArmorNodeProcess
         self.namespace = f'/armor_bench_{os.getpid()}_{next(_namespaces)}'
         state = scratch / f'state{self.namespace.replace("/", "_")}'
         arguments = ['-r', f'__ns:={self.namespace}',

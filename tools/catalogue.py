@@ -11,7 +11,9 @@ parsing and completion, and the node's parameters read it), README's parameter t
 the node's own parameters of armor_service/parameters.py), and a first row in
 docs/commands.md for a command it lacks (summary and an example built from the argument
 names, to be edited), and the C++ client's armor_cpp/include/armor_cpp/contract.hpp
-(armor_cpp/contract_header.py). Checked against it: the command and
+(armor_cpp/contract_header.py), and the clients' methods of the commands that have a face:
+armor_client/armor_client/faces.py and armor_cpp/include/armor_cpp/faces.hpp (tools/faces.py).
+Checked against it: the command and
 exit-code tables of docs/commands.md (they carry hand-written examples), and the sample
 parameters file armor_service/config/armor.params.yaml (every parameter shown, no other).
 tests/test_catalogue.py runs the check.
@@ -49,6 +51,14 @@ def cpp_contract_header(core_text: str) -> str:
 
 
 CPP_CONTRACT = REPO / 'armor_cpp' / 'include' / 'armor_cpp' / 'contract.hpp'
+
+
+def client_faces(core: dict) -> Dict[pathlib.Path, str]:
+    """The generated client methods (tools/faces.py), by file."""
+    spec = importlib.util.spec_from_file_location('faces', REPO / 'tools' / 'faces.py')
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.generated(core)
 
 
 def core_jar() -> pathlib.Path:
@@ -180,6 +190,10 @@ def differences(core_text: str) -> List[str]:
     if not CPP_CONTRACT.exists() or CPP_CONTRACT.read_text() != cpp_contract_header(core_text):
         found.append(f'{CPP_CONTRACT.relative_to(REPO)} differs from the core\'s catalogue '
                      '(run make catalogue)')
+    for path, text in client_faces(core).items():
+        if not path.exists() or path.read_text() != text:
+            found.append(f'{path.relative_to(REPO)} differs from the faces of the catalogue '
+                         '(run make catalogue)')
     if README.read_text() != readme_with_table(README.read_text()):
         found.append('README.md: the parameter table differs from the parameters '
                      '(run make catalogue)')
@@ -232,11 +246,14 @@ def main(argv: List[str]) -> int:
     if not options.check:
         CATALOGUE_JSON.write_text(core_text)
         CPP_CONTRACT.write_text(cpp_contract_header(core_text))
+        for path, text in client_faces(json.loads(core_text)).items():
+            path.write_text(text)
         README.write_text(readme_with_table(README.read_text()))
         COMMANDS_DOC.write_text(docs_with_new_commands(COMMANDS_DOC.read_text(),
                                                        json.loads(core_text)))
         print(f'wrote {CATALOGUE_JSON.relative_to(REPO)}, {CPP_CONTRACT.relative_to(REPO)}, '
-              'the parameter table of README.md and'
+              'the generated client methods (faces.py, faces.hpp), the parameter table'
+              ' of README.md and'
               ' a row in docs/commands.md for each command it lacked (edit its example)')
     found = differences(core_text)
     for finding in found:

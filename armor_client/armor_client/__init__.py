@@ -23,9 +23,9 @@ import importlib
 # none of them, and importing rclpy and the message packages costs a quarter of a second.
 _EXPORTS = {
     'Batch': 'armor_client.batch',
-    'Characteristic': 'armor_client.operations', 'Consistency': 'armor_client.operations',
-    'Reasoner': 'armor_client.operations', 'SparqlRows': 'armor_client.operations',
-    'AcknowledgedChange': 'armor_client.operations', 'ChangeHistory': 'armor_client.operations',
+    'Characteristic': 'armor_client.operations', 'Consistency': 'armor_client.answers',
+    'Reasoner': 'armor_client.operations', 'SparqlRows': 'armor_client.answers',
+    'AcknowledgedChange': 'armor_client.answers', 'ChangeHistory': 'armor_client.answers',
     'Armor': 'armor_client.reference', 'Reference': 'armor_client.reference',
     'ArmorTransport': 'armor_client.transport', 'directive': 'armor_client.transport',
     'SceneAnswer': 'armor_client.scenes', 'SceneClass': 'armor_client.scenes',

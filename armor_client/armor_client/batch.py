@@ -8,8 +8,9 @@ all.
 
 from typing import Any, List, Optional, Sequence
 
+from armor_client.answers import Words
 from armor_client.errors import ArmorRolledBackError, ArmorServiceInternalError, error_for
-from armor_client.operations import Manipulations, Words
+from armor_client.operations import Manipulations
 from armor_client.transport import ArmorTransport, directive
 from armor_contract.exit_codes import ExitCode
 from armor_msgs.msg import ArmorDirectiveReq

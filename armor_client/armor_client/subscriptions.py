@@ -37,7 +37,7 @@ from typing import Any, Callable, Dict, List, Optional, Tuple, Union
 
 from armor_client import commands
 from armor_client.errors import ArmorArgumentError, ArmorServiceCallError, error_for
-from armor_client.transport import ArmorTransport, directive
+from armor_client.transport import ArmorTransport, call_service, directive
 from armor_client.values import answer_value, is_literal, short_name
 from armor_contract.events import (ANSWER_QOS, CHANGE_QOS, CHANGE_TOPIC, SUBSCRIBE_SERVICE,
                                    UNSUBSCRIBE_SERVICE)
@@ -176,12 +176,13 @@ class _Services:
 
     def subscribe(self, request: ArmorDirectiveReq, timeout_s: Optional[float]) -> Any:
         self._prove()
-        return _call(self._subscribe, ArmorSubscribe.Request(armor_request=request), timeout_s)
+        return call_service(self._subscribe, ArmorSubscribe.Request(armor_request=request),
+                            timeout_s)
 
     def unsubscribe(self, subscription_id: str, timeout_s: Optional[float]) -> Any:
         self._prove()
-        return _call(self._unsubscribe, ArmorUnsubscribe.Request(subscription_id=subscription_id),
-                     timeout_s)
+        return call_service(self._unsubscribe,
+                            ArmorUnsubscribe.Request(subscription_id=subscription_id), timeout_s)
 
     def _prove(self) -> None:
         """Wait until armor_unsubscribe has answered once (transport.py says why).
@@ -202,24 +203,13 @@ class _Services:
                         'running?')
             while True:
                 try:
-                    _call(self._unsubscribe, ArmorUnsubscribe.Request(subscription_id=''), 2.0)
+                    call_service(self._unsubscribe, ArmorUnsubscribe.Request(subscription_id=''),
+                                 2.0)
                     self._proven = True
                     return
                 except ArmorServiceCallError:
                     if time.monotonic() > deadline:
                         raise
-
-
-def _call(client: Any, request: Any, timeout_s: Optional[float]) -> Any:
-    done = threading.Event()
-    future = client.call_async(request)
-    future.add_done_callback(lambda _: done.set())
-    if not done.wait(timeout_s):
-        client.remove_pending_request(future)
-        raise ArmorServiceCallError(f'no answer from {client.srv_name} within {timeout_s} s')
-    if future.exception() is not None:
-        raise ArmorServiceCallError(f'call to {client.srv_name} failed: {future.exception()}')
-    return future.result()
 
 
 _SERVICES: 'weakref.WeakKeyDictionary[ArmorTransport, _Services]' = weakref.WeakKeyDictionary()

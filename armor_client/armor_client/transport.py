@@ -38,6 +38,24 @@ def directive(client: str, reference: str, command: str, primary: str = '',
                              args=texts)
 
 
+def call_service(client: Any, request: Any, timeout_s: Optional[float]) -> Any:
+    """Call one of ARMOR's services and wait for its answer: the client's one way of calling.
+
+    Raises:
+        ArmorCallTimeout: no answer within timeout_s (the request is forgotten).
+        ArmorServiceCallError: the call broke.
+    """
+    done = threading.Event()
+    future = client.call_async(request)
+    future.add_done_callback(lambda _: done.set())
+    if not done.wait(timeout_s):
+        client.remove_pending_request(future)
+        raise ArmorCallTimeout(f'no answer from {client.srv_name} within {timeout_s} s')
+    if future.exception() is not None:
+        raise ArmorServiceCallError(f'call to {client.srv_name} failed: {future.exception()}')
+    return future.result()
+
+
 class ArmorTransport:
     """The two ARMOR service clients behind one object.
 
@@ -104,7 +122,7 @@ class ArmorTransport:
         if client.srv_name not in self._ready:
             self._wait_until_answered(client)
         try:
-            return self._send(client, message, timeout_s)
+            return call_service(client, message, timeout_s)
         except ArmorCallTimeout:
             # The node behind the service may have been replaced: prove the new one's response
             # path before the next call instead of risking another lost answer.
@@ -129,20 +147,8 @@ class ArmorTransport:
                     f'service {client.srv_name} did not answer within {self._service_wait_s:.0f}'
                     ' s; is the ARMOR node running (armor serve)?')
             try:
-                self._send(client, harmless, min(2.0, max(0.1, remaining)))
+                call_service(client, harmless, min(2.0, max(0.1, remaining)))
                 self._ready.add(client.srv_name)
                 return
             except ArmorServiceCallError:
                 continue
-
-    def _send(self, client, message, timeout_s):
-        done = threading.Event()
-        future = client.call_async(message)
-        future.add_done_callback(lambda _: done.set())
-        if not done.wait(timeout_s):
-            client.remove_pending_request(future)
-            raise ArmorCallTimeout(f'no answer from {client.srv_name} within {timeout_s} s')
-        if future.exception() is not None:
-            raise ArmorServiceCallError(f'call to {client.srv_name} failed: '
-                                        f'{future.exception()}')
-        return future.result()

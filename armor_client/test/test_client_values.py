@@ -4,7 +4,7 @@
 import math
 
 from armor_client import errors
-from armor_client.operations import Answers
+from armor_client.answers import Answers
 from armor_client.values import (answer_value, literal_value, short_name, split_literal,
                                  typed_argument)
 from armor_msgs.msg import ArmorDirectiveRes, QueryItem

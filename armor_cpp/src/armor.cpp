@@ -278,11 +278,6 @@ std::vector<std::string> Reference::entities(
   return names;
 }
 
-std::vector<std::string> Reference::types_of(const std::string & individual) const
-{
-  return entities(contract::QUERY_IND, {individual});
-}
-
 std::vector<std::string> Reference::classes_of(
   const std::string & individual, bool most_specific) const
 {
@@ -292,47 +287,14 @@ std::vector<std::string> Reference::classes_of(
   return entities(contract::QUERY_CLASS_IND, {individual});
 }
 
-std::vector<std::string> Reference::instances(const std::string & cls) const
-{
-  return entities(contract::QUERY_IND_CLASS, {cls});
-}
-
-std::vector<std::string> Reference::dl_instances(const std::string & expression) const
-{
-  return entities(contract::QUERY_IND_DL, {expression});
-}
-
-std::vector<std::string> Reference::same_individuals(const std::string & individual) const
-{
-  return entities(contract::QUERY_IND_SAME, {individual});
-}
-
-std::vector<std::string> Reference::data_properties_of(const std::string & individual) const
-{
-  return entities(contract::QUERY_IND_DATAPROP, {individual});
-}
-
-std::vector<std::string> Reference::object_properties_of(const std::string & individual) const
-{
-  return entities(contract::QUERY_IND_OBJECTPROP, {individual});
-}
-
-std::vector<Value> Reference::data_values(
-  const std::string & prop, const std::string & individual) const
+std::vector<Value> Reference::values(
+  const contract::Command & command, const std::vector<std::string> & args) const
 {
   std::vector<Value> values;
-  for (const std::string & text : answer(contract::QUERY_DATAPROP_IND, {prop, individual})
-    .queried_objects)
-  {
+  for (const std::string & text : answer(command, args).queried_objects) {
     values.push_back(answer_value(text, state_->iris));
   }
   return values;
-}
-
-std::vector<std::string> Reference::object_values(
-  const std::string & prop, const std::string & individual) const
-{
-  return entities(contract::QUERY_OBJECTPROP_IND, {prop, individual});
 }
 
 namespace
@@ -392,35 +354,10 @@ Justifications Reference::explain_inconsistency(int justifications) const
     {std::to_string(justifications)}).queried_objects);
 }
 
-std::vector<std::string> Reference::subclasses(const std::string & cls) const
+std::vector<std::string> Reference::expressions(
+  const contract::Command & command, const std::vector<std::string> & args) const
 {
-  return entities(contract::QUERY_CLASS_CLASS, {cls});
-}
-
-std::vector<std::string> Reference::dl_subclasses(const std::string & expression) const
-{
-  return entities(contract::QUERY_CLASS_DL, {expression});
-}
-
-std::vector<std::string> Reference::superclasses(const std::string & cls) const
-{
-  return entities(contract::QUERY_CLASS_SUPER, {cls});
-}
-
-std::vector<std::string> Reference::equivalent_classes(const std::string & cls) const
-{
-  return entities(contract::QUERY_CLASS_EQUIVALENT, {cls});
-}
-
-std::vector<std::string> Reference::disjoint_classes(const std::string & cls) const
-{
-  return entities(contract::QUERY_CLASS_DISJOINT, {cls});
-}
-
-std::vector<std::string> Reference::restrictions(const std::string & cls) const
-{
-  std::vector<std::string> texts = answer(contract::QUERY_CLASS_RESTRICTIONS, {cls})
-    .queried_objects;
+  std::vector<std::string> texts = answer(command, args).queried_objects;
   if (state_->iris) {
     return texts;
   }
@@ -440,16 +377,6 @@ std::vector<std::string> Reference::restrictions(const std::string & cls) const
     text = shortened;
   }
   return texts;
-}
-
-std::vector<std::string> Reference::object_subproperties(const std::string & prop) const
-{
-  return entities(contract::QUERY_OBJECTPROP_OBJECTPROP, {prop});
-}
-
-std::vector<std::string> Reference::data_subproperties(const std::string & prop) const
-{
-  return entities(contract::QUERY_DATAPROP_DATAPROP, {prop});
 }
 
 SparqlRows Reference::sparql(const std::string & query, std::optional<int> timeout_ms) const

@@ -42,7 +42,7 @@ import threading
 import time
 from typing import Any, Callable, Dict, List, Optional
 
-from armor_service import wire
+from armor_service import core_ops, wire
 
 _READY_PREFIX = 'ARMOR core ready on '
 # What the core prints instead of the ready line when it cannot start (CoreMain.java).
@@ -176,7 +176,7 @@ class CoreProcess:
 
     def catalogue(self, timeout_s: Optional[float] = None) -> dict:
         """The running core's catalogue: commands (with plugins'), exit codes, settings."""
-        return self.request({'op': 'catalogue'}, timeout_s)['catalogue']
+        return core_ops.catalogue(self.request, timeout_s)
 
     def _exchange(self, payload: dict, connection: socket.socket, generation: int,
                   timeout_s: Optional[float]) -> dict:

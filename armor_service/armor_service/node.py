@@ -17,7 +17,7 @@ from armor_contract.exit_codes import ExitCode
 from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
 from armor_msgs.msg import ArmorChange
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
-from armor_service import wire
+from armor_service import core_ops, wire
 from armor_service.callback_guard import guarded
 from armor_service.core_process import CoreProcess, CoreUnavailable
 from armor_service.extensions import load_extensions
@@ -29,6 +29,9 @@ from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.exceptions import InvalidParameterTypeException
 from rclpy.node import Node
+
+# The client name of the directives the node sends on its own (preloading, restoring).
+NODE_CLIENT = 'armor_service'
 
 
 class ArmorService(Node):
@@ -77,10 +80,11 @@ class ArmorService(Node):
             + (f'. Web view: {self._web_view.url}' if self._web_view else ''))
 
     def directive_callback(self, request, response):
-        payload = {'op': 'directive', 'directive': wire.directive_to_json(request.armor_request)}
         try:
-            reply = self._core.request(payload, self._request_timeout())
-            response.armor_response = wire.response_from_json(reply['response'])
+            reply = core_ops.answer(self._core.request,
+                                    wire.directive_to_json(request.armor_request),
+                                    self._request_timeout())
+            response.armor_response = wire.response_from_json(reply)
         except CoreUnavailable as error:
             response.armor_response = wire.error_response(ExitCode.CORE_UNAVAILABLE, str(error))
         except wire.FrameTooLarge as error:
@@ -93,8 +97,8 @@ class ArmorService(Node):
     def directive_list_callback(self, request, response):
         directives = [wire.directive_to_json(r) for r in request.armor_requests]
         try:
-            reply = self._core.request({'op': 'list', 'directives': directives},
-                                       self._request_timeout())['list']
+            reply = core_ops.answer_list(self._core.request, directives,
+                                         self._request_timeout())
             response.success = reply['success']
             response.is_consistent = reply['is_consistent']
             response.armor_responses = [wire.response_from_json(r)
@@ -169,9 +173,8 @@ class ArmorService(Node):
 
     def _state_damage(self, send) -> list:
         """What the core's state directory could not restore or cannot keep (GET STATE DAMAGE)."""
-        query = {'client_name': 'armor_service', 'reference_name': '', 'command': 'GET',
-                 'primary_command_spec': 'STATE', 'secondary_command_spec': 'DAMAGE', 'args': []}
-        answer = send({'op': 'directive', 'directive': query})['response']
+        answer = core_ops.answer(send, core_ops.directive(NODE_CLIENT, '', 'GET', 'STATE',
+                                                          'DAMAGE'))
         damage = [json.loads(line) for line in answer['queried_objects']]
         for entry in damage:
             self.get_logger().error(f'state damage: {json.dumps(entry)}')
@@ -196,18 +199,15 @@ class ArmorService(Node):
                 'away (keep it to recover by hand) and restart, or start with '
                 '-p restore_state:=false')
             return
-        listing = {'client_name': 'armor_service', 'reference_name': '', 'command': 'GET',
-                   'primary_command_spec': 'ALL', 'secondary_command_spec': 'REFS', 'args': []}
-        answer = send({'op': 'directive', 'directive': listing})['response']
+        answer = core_ops.answer(send, core_ops.directive(NODE_CLIENT, '', 'GET', 'ALL', 'REFS'))
         restored = name in answer['queried_objects']
-        directive = {
-            'client_name': 'armor_service', 'reference_name': self._value('preload_reference'),
-            'command': 'LOAD', 'primary_command_spec': 'FILE', 'secondary_command_spec': '',
-            'args': [os.path.abspath(path), self._value('preload_iri'),
-                     str(self._value('preload_buffered_manipulation')).lower(),
-                     self._value('preload_reasoner'),
-                     str(self._value('preload_buffered_reasoner')).lower()]}
-        reply = send({'op': 'directive', 'directive': directive})['response']
+        load = core_ops.directive(
+            NODE_CLIENT, name, 'LOAD', 'FILE', '',
+            [os.path.abspath(path), self._value('preload_iri'),
+             str(self._value('preload_buffered_manipulation')).lower(),
+             self._value('preload_reasoner'),
+             str(self._value('preload_buffered_reasoner')).lower()])
+        reply = core_ops.answer(send, load)
         if not reply['success']:
             raise RuntimeError(f'preloading {path} failed: {reply["exit_code"]} '
                                f'{reply["error_description"]}')

@@ -28,7 +28,7 @@ from armor_contract.exit_codes import ExitCode
 from armor_contract.services import SERVICE_QOS
 from armor_msgs.msg import ArmorAnswer
 from armor_msgs.srv import ArmorSubscribe, ArmorUnsubscribe
-from armor_service import wire
+from armor_service import core_ops, wire
 from armor_service.callback_guard import guarded
 from armor_service.core_process import CoreProcess, CoreUnavailable
 from rclpy.event_handler import PublisherEventCallbacks
@@ -131,8 +131,7 @@ class SubscriptionTopics:
         with self._lock:
             self._subscriptions[subscription_id] = subscription
         try:
-            reply = self._core.request({'op': 'subscribe', 'subscription': subscription_id,
-                                        'directive': directive})
+            reply = core_ops.subscribe(self._core.request, subscription_id, directive)
             first = reply['response']
         except CoreUnavailable as error:
             first = {'success': False, 'exit_code': ExitCode.CORE_UNAVAILABLE,
@@ -182,10 +181,8 @@ class SubscriptionTopics:
             subscriptions = list(self._subscriptions.values())
         for subscription in subscriptions:
             try:
-                reply = send({'op': 'subscribe', 'subscription': subscription.id,
-                              'directive': subscription.directive,
-                              'known': sorted(subscription.answer)})
-                first = reply['response']
+                first = core_ops.subscribe(send, subscription.id, subscription.directive,
+                                           sorted(subscription.answer))['response']
             except CoreUnavailable as error:
                 first = {'success': False, 'exit_code': ExitCode.CORE_UNAVAILABLE,
                          'error_description': str(error)}
@@ -245,7 +242,7 @@ class SubscriptionTopics:
             return False
         if tell_core:
             try:
-                self._core.request({'op': 'unsubscribe', 'subscription': subscription_id})
+                core_ops.unsubscribe(self._core.request, subscription_id)
             except CoreUnavailable:
                 pass  # a new core is given only the subscriptions still here
         self._node.destroy_publisher(subscription.publisher)

@@ -114,7 +114,7 @@ def start_node(scratch: pathlib.Path, *ros_args: str, namespace: str = '', **pro
     """
     if namespace:
         ros_args = (*ros_args, '-r', f'__ns:={namespace}')
-    from armor_service.launch import ArmorNodeProcess
+    from armor_service.node_harness import ArmorNodeProcess
     node = ArmorNodeProcess(scratch / 'armor_service.log', [
         '-p', f'preload_file:={ONTOLOGIES / "robotics.owl"}', '-p', 'preload_reference:=robotics',
         '-p', f'allowed_dirs:=["{ONTOLOGIES}", "{TEST_ONTOLOGIES}", "{scratch}"]',

@@ -28,7 +28,7 @@ from armor_client import ArmorTransport, directive
 from armor_contract.events import ANSWER_QOS, SUBSCRIBE_SERVICE, UNSUBSCRIBE_SERVICE
 from armor_msgs.msg import ArmorAnswer
 from armor_msgs.srv import ArmorSubscribe, ArmorUnsubscribe
-from armor_service.launch import ArmorNodeProcess
+from armor_service.node_harness import ArmorNodeProcess
 from conftest import call_service, REPO, TEST_ONTOLOGIES, start_node
 import pytest
 from test_contract_support import answer, failure, succeeded, unique_name

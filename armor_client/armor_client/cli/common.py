@@ -9,7 +9,7 @@ from typing import Any, Callable, List, Optional, Sequence, TextIO, Tuple
 from armor_client import commands
 from armor_client.cli import EXIT_FAILED, EXIT_NO_SERVICE
 from armor_client.errors import ArmorServiceCallError, ArmorServiceInternalError
-from armor_client.operations import Answers, sparql_rows
+from armor_client.answers import Answers, sparql_rows
 from armor_client.reference import Armor
 from armor_client.values import answer_value, is_literal, split_literal
 

@@ -202,7 +202,7 @@ private:
 };
 
 // One loaded ontology: every command of the contract as a method. Copies share the state.
-class Reference : public Manipulations<Reference>
+class Reference : public Manipulations<Reference>, public QueryFaces<Reference>
 {
 public:
   Reference(Armor armor, const std::string & name, bool iris);
@@ -212,44 +212,12 @@ public:
   // The consistency ARMOR reported with the last answer to this reference (empty before one).
   std::optional<bool> consistent() const;
 
-  // Queries (never refused because of a mount; answers sorted by the service)
+  // Queries (never refused because of a mount; answers sorted by the service): those with a
+  // face in the core's catalogue are generated (faces.hpp, QueryFaces), these are composites.
 
-  // The classes of an individual, asserted and inferred (QUERY IND).
-  std::vector<std::string> types_of(const std::string & individual) const;
   // The classes of an individual (QUERY CLASS IND), only the most specific on request.
   std::vector<std::string> classes_of(
     const std::string & individual, bool most_specific = false) const;
-  // The instances of a class, asserted and inferred (QUERY IND CLASS).
-  std::vector<std::string> instances(const std::string & cls) const;
-  // The instances of a class expression in Manchester syntax (QUERY IND DL).
-  std::vector<std::string> dl_instances(const std::string & expression) const;
-  // The individuals inferred equal to one, not itself (QUERY IND SAME).
-  std::vector<std::string> same_individuals(const std::string & individual) const;
-  // The data properties that have values for an individual (QUERY IND DATAPROP).
-  std::vector<std::string> data_properties_of(const std::string & individual) const;
-  // The object properties that have values for an individual (QUERY IND OBJECTPROP).
-  std::vector<std::string> object_properties_of(const std::string & individual) const;
-  // An individual's values of a data property, typed (QUERY DATAPROP IND).
-  std::vector<Value> data_values(const std::string & prop, const std::string & individual) const;
-  // The individuals an individual is related to by an object property (QUERY OBJECTPROP IND).
-  std::vector<std::string> object_values(
-    const std::string & prop, const std::string & individual) const;
-  // The subclasses of a class, all levels (QUERY CLASS CLASS).
-  std::vector<std::string> subclasses(const std::string & cls) const;
-  // The named subclasses of a class expression (QUERY CLASS DL).
-  std::vector<std::string> dl_subclasses(const std::string & expression) const;
-  // The superclasses of a class (QUERY CLASS SUPER).
-  std::vector<std::string> superclasses(const std::string & cls) const;
-  // The named classes equivalent to a class, not itself (QUERY CLASS EQUIVALENT).
-  std::vector<std::string> equivalent_classes(const std::string & cls) const;
-  // The classes disjoint with a class (QUERY CLASS DISJOINT).
-  std::vector<std::string> disjoint_classes(const std::string & cls) const;
-  // A class's restrictions, one per string in Manchester syntax (QUERY CLASS RESTRICTIONS).
-  std::vector<std::string> restrictions(const std::string & cls) const;
-  // The sub-properties of an object property (QUERY OBJECTPROP OBJECTPROP).
-  std::vector<std::string> object_subproperties(const std::string & prop) const;
-  // The sub-properties of a data property (QUERY DATAPROP DATAPROP).
-  std::vector<std::string> data_subproperties(const std::string & prop) const;
   // A SPARQL SELECT or ASK over asserted and inferred knowledge (QUERY SPARQL FORMATTED);
   // an ASK answers one row {"ASK": true/false}.
   SparqlRows sparql(
@@ -303,13 +271,19 @@ public:
   Batch batch() const;
 
 private:
-  friend class Manipulations<Reference>;
+  friend class ManipulationFaces<Reference>;
+  friend class QueryFaces<Reference>;
   friend class Armor;
   void consistent_from(const armor_msgs::msg::ArmorDirectiveRes & response) const;
   void send_change(const contract::Command & command, const std::vector<std::string> & args);
   armor_msgs::msg::ArmorDirectiveRes answer(
     const contract::Command & command, const std::vector<std::string> & args) const;
+  // The answer shapes of the generated queries (faces.hpp).
   std::vector<std::string> entities(
+    const contract::Command & command, const std::vector<std::string> & args) const;
+  std::vector<Value> values(
+    const contract::Command & command, const std::vector<std::string> & args) const;
+  std::vector<std::string> expressions(
     const contract::Command & command, const std::vector<std::string> & args) const;
 
   struct State;
@@ -337,7 +311,7 @@ public:
   bool send();
 
 private:
-  friend class Manipulations<Batch>;
+  friend class ManipulationFaces<Batch>;
   Batch & send_change(const contract::Command & command, const std::vector<std::string> & args);
 
   Armor armor_;

@@ -25,6 +25,7 @@ import json
 import time
 from typing import Any, Awaitable, Callable, Dict, Hashable, Optional, Tuple
 
+from armor_service import core_ops
 from armor_service.core_process import CoreUnavailable
 
 MAX_CONCURRENT = 2
@@ -54,8 +55,7 @@ class CoreReads:
 
     async def view(self, request: Dict[str, Any]) -> Dict[str, Any]:
         """A view's JSON answer; raises ViewFailed with the core's exit code and reason."""
-        reply = await self._send({'op': 'view', 'view': request})
-        answer = reply['view']
+        answer = await self._send(core_ops.view, request)
         if 'error' in answer:
             raise ViewFailed(answer['error']['exit_code'], answer['error']['description'])
         return answer
@@ -63,15 +63,14 @@ class CoreReads:
     async def directive(self, reference: str, command: str, primary: str, secondary: str,
                         *args: str) -> Dict[str, Any]:
         """A QUERY directive's response, as the core's JSON (the armor_msgs fields)."""
-        directive = {'client_name': WEB_CLIENT, 'reference_name': reference, 'command': command,
-                     'primary_command_spec': primary, 'secondary_command_spec': secondary,
-                     'args': list(args)}
-        reply = await self._send({'op': 'directive', 'directive': directive})
-        return reply['response']
+        return await self._send(core_ops.answer, core_ops.directive(
+            WEB_CLIENT, reference, command, primary, secondary, args))
 
-    async def _send(self, payload: Dict[str, Any]) -> Dict[str, Any]:
+    async def _send(self, operation: Callable[..., Dict[str, Any]],
+                    request: Dict[str, Any]) -> Dict[str, Any]:
+        """A core_ops operation run in the read pool, with the web view's time limit."""
         loop = asyncio.get_running_loop()
-        return await loop.run_in_executor(self._pool, self._core.request, payload,
+        return await loop.run_in_executor(self._pool, operation, self._core.request, request,
                                           self._timeout_s())
 
     def close(self) -> None:

@@ -28,7 +28,7 @@ public final class Catalogue {
         JsonObject catalogue = new JsonObject();
         catalogue.addProperty("format", FORMAT);
         JsonArray commands = new JsonArray();
-        table.catalogue().forEach(spec -> commands.add(command(spec)));
+        table.catalogue().forEach(spec -> commands.add(command(spec, table.face(spec.key()).orElse(null))));
         catalogue.add("commands", commands);
         JsonArray codes = new JsonArray();
         for (ExitCode code : ExitCode.values()) {
@@ -58,7 +58,7 @@ public final class Catalogue {
         return new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(json(table));
     }
 
-    private static JsonObject command(CommandSpec spec) {
+    private static JsonObject command(CommandSpec spec, Face face) {
         JsonObject entry = new JsonObject();
         entry.addProperty("key", spec.key());
         entry.add("words", strings(Arrays.stream(spec.key().split(" ")).map(w -> w.equals("-") ? "" : w).toList()));
@@ -72,6 +72,9 @@ public final class Catalogue {
         entry.add("args", args);
         entry.addProperty("summary", spec.summary());
         entry.addProperty("origin", spec.origin());
+        if (face != null) {
+            entry.add("face", face.json());
+        }
         return entry;
     }
 
