@@ -1,6 +1,7 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.command;
 
+import io.github.armor.core.reference.EntityResolver;
 import java.util.Collection;
 import java.util.Comparator;
 import java.util.List;
@@ -20,7 +21,8 @@ public final class CommandSuggestions {
     public static List<String> closest(Collection<CommandSpec> specs, String key, int argumentCount) {
         record Scored(CommandSpec spec, int score) {}
         List<Scored> ranked = specs.stream()
-                .map(spec -> new Scored(spec, distance(key, spec.key()) * 2 + (accepts(spec, argumentCount) ? 0 : 1)))
+                .map(spec -> new Scored(spec, EntityResolver.editDistance(key, spec.key(), Integer.MAX_VALUE) * 2
+                        + (accepts(spec, argumentCount) ? 0 : 1)))
                 .sorted(Comparator.comparingInt(Scored::score).thenComparing(s -> s.spec().key()))
                 .toList();
         if (ranked.isEmpty()) {
@@ -34,24 +36,5 @@ public final class CommandSuggestions {
     private static boolean accepts(CommandSpec spec, int count) {
         return count >= spec.required().size()
                 && (spec.variadic() || count <= spec.required().size() + spec.optional().size());
-    }
-
-    private static int distance(String a, String b) {
-        int[] previous = new int[b.length() + 1];
-        int[] current = new int[b.length() + 1];
-        for (int j = 0; j <= b.length(); j++) {
-            previous[j] = j;
-        }
-        for (int i = 1; i <= a.length(); i++) {
-            current[0] = i;
-            for (int j = 1; j <= b.length(); j++) {
-                int substitution = previous[j - 1] + (a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1);
-                current[j] = Math.min(substitution, Math.min(previous[j], current[j - 1]) + 1);
-            }
-            int[] swap = previous;
-            previous = current;
-            current = swap;
-        }
-        return previous[b.length()];
     }
 }

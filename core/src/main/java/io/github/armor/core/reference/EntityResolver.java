@@ -185,7 +185,7 @@ public final class EntityResolver {
     }
 
     /** The edit distance of a and b when it is at most {@code limit}, else some larger number (stops early). */
-    private static int editDistance(String a, String b, int limit) {
+    public static int editDistance(String a, String b, int limit) {
         int[] previous = new int[b.length() + 1];
         int[] current = new int[b.length() + 1];
         for (int j = 0; j <= b.length(); j++) {
