@@ -48,8 +48,11 @@ import org.semanticweb.owlapi.model.parameters.Imports;
  *
  * <p>The work of a change is the matches it makes or ends: a moved robot joins its new place's
  * neighbours; a clock value replaced by the next is joined from both side by side ({@link
- * #replaced}): each room's last visit is read once and compared twice, and only the rooms whose
- * urgency changed move a count. What the modules reason on again is only what changed.
+ * #replaced}), and where the rest of the rule enumerates values that only linear comparisons
+ * read, only the values in the ranges where those comparisons differ before and after are
+ * visited ({@link FlipRanges}, over each property's values in numeric order, {@link
+ * OrderedValues}): a tick costs the rooms whose urgency changed, not every room. What the modules
+ * reason on again is only what changed.
  *
  * <p>Why not Jena's forward (RETE) engine, which has built-ins: its retraction is not exact.
  * With Jena 3.10's FORWARD_RETE, the rule (?a p ?b) -> (?b q x) and the facts (a1 p b), (a2 p b),
