@@ -239,7 +239,7 @@ def _run(node: BenchNode, path: pathlib.Path, shape, reasoner: str, cycles: int,
          budget_s: float, reference: str) -> dict:
     deadline = Deadline(budget_s)
     result = {'load_s': None, 'first_s': None, 'cycles': [], 'wrong': 0, 'note': '',
-              'reasoning': ''}
+              'reasoning': '', 'steps': {}}
 
     def call(*words, what: str):
         if deadline.expired():
@@ -260,9 +260,11 @@ def _run(node: BenchNode, path: pathlib.Path, shape, reasoner: str, cycles: int,
             for directive in shape.cycle() + [('REASON',)]:
                 seconds, _ = call(*directive, what='a cycle')
                 spent += seconds
+                result['steps'].setdefault(' '.join(directive[:2]), []).append(seconds)
             for question, expected in shape.questions():
                 seconds, answer = call(*question, what='a question')
                 spent += seconds
+                result['steps'].setdefault(' '.join(question[:2]), []).append(seconds)
                 result['wrong'] += _short(answer) != expected
             result['cycles'].append(spent)
         result['memory'] = node.memory()
@@ -379,6 +381,13 @@ def main():
     results = measure(scratch, CoreSnapshot(scratch), 'smoke' if options.smoke else 'full',
                       options.shapes, options.reasoners, baseline)
     print(render(results))
+    print('\nWhere a cycle goes (p50 per directive, ms):')
+    for label, sizes in results.items():
+        for size, runs in sizes.items():
+            for name, run in runs.items():
+                steps = ', '.join(f'{words} {statistics.median(times) * 1000:.1f}'
+                                  for words, times in run.get('steps', {}).items())
+                print(f'- {label}, {size:,}, {name}: {steps}')
 
 
 if __name__ == '__main__':

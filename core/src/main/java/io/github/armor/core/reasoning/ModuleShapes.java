@@ -72,6 +72,7 @@ final class ModuleShapes {
     private long reused;
     private final Set<OWLDataProperty> seen = new HashSet<>();
     private final Map<OWLDataProperty, Set<OWLDataProperty>> related = new HashMap<>();
+    private final Map<OWLDataProperty, Boolean> blindness = new java.util.concurrent.ConcurrentHashMap<>();
 
     /** @param schema what every module is reasoned with (it decides which values are {@link #blind}) */
     ModuleShapes(OWLOntologyManager manager, List<OWLAxiom> schema) {
@@ -91,6 +92,10 @@ final class ModuleShapes {
 
     /** Whether the schema cannot tell one value of the property from another (nor of any property in its hierarchy). */
     private boolean blind(OWLDataProperty property) {
+        return blindness.computeIfAbsent(property, this::blindInSchema);
+    }
+
+    private boolean blindInSchema(OWLDataProperty property) {
         Set<OWLDataProperty> reached = new HashSet<>(Set.of(property));
         List<OWLDataProperty> frontier = new ArrayList<>(reached);
         while (!frontier.isEmpty()) {
