@@ -97,18 +97,23 @@ class PartOfMap:
         path.write_text('\n'.join(lines) + '\n)\n')
         return path
 
-    @property
-    def moves_left(self) -> int:
-        return len(self._empty)
-
-    def cycle(self) -> List[tuple]:
-        """One move of an agent that shares its place into an empty one: the directives."""
+    def _count(self) -> Dict[str, int]:
         count: Dict[str, int] = {}
         for place in self.at.values():
             count[place] = count.get(place, 0) + 1
-        while count[self.at[self._movable[-1]]] < 2:
-            self._movable.pop()
-        agent = self._movable.pop()
+        return count
+
+    @property
+    def moves_left(self) -> int:
+        # An agent moves only out of a place it shares (the place stays busy), never out of the dock.
+        sharing = sum(c - 1 for place, c in self._count().items() if place != 'dock' and c > 1)
+        return min(len(self._empty), sharing)
+
+    def cycle(self) -> List[tuple]:
+        """One move of an agent that shares its place into an empty one: the directives."""
+        count = self._count()
+        agent = next(a for a in reversed(self._movable) if count[self.at[a]] >= 2)
+        self._movable.remove(agent)
         old, new = self.at[agent], self._empty.pop(0)
         self.at[agent] = new
         return [('REPLACE OBJECTPROP IND', 'locatedAt', agent, new, old)]
@@ -255,7 +260,9 @@ def _run(node: BenchNode, path: pathlib.Path, shape, reasoner: str, cycles: int,
                                         what='LOAD')
         result['reasoning'] = loaded.error_description
         result['first_s'], _ = call('REASON', what='first REASON')
-        for _ in range(min(cycles, shape.moves_left)):
+        for _ in range(cycles):
+            if shape.moves_left <= 0:
+                break
             spent = 0.0
             for directive in shape.cycle() + [('REASON',)]:
                 seconds, _ = call(*directive, what='a cycle')
