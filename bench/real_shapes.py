@@ -2,7 +2,10 @@
 """Benchmark 9 (issue 28), the ontologies robots really use: a cycle per shape and size, through
 the service, every answer checked, the modular reasoners beside the whole-ontology Openllet.
 
-    python bench/real_shapes.py [--smoke]
+    python bench/real_shapes.py [--smoke] [--shapes c] [--reasoners PELLET] [--baseline-jar JAR]
+
+--baseline-jar runs another build of the core (an armor-core.jar with its lib/ beside it, e.g.
+main's core/target) beside this one, each size on both, so a change is measured side by side.
 
 Shapes (each written here as an OWL functional-syntax file):
 - (a) robotics: bench/abox.py's map and moves (benchmark 3's cycle);
@@ -25,7 +28,7 @@ import time
 from typing import Dict, List, Optional, Set
 
 from abox import RoboticsABox
-from harness import BenchNode, CoreSnapshot, Deadline, script_scale_and_scratch
+from harness import BenchNode, CoreSnapshot, Deadline
 
 NS = 'http://www.example.org/shapes#'
 WHOLE = 'openllet.owlapi.OpenlletReasonerFactory'
@@ -94,18 +97,23 @@ class PartOfMap:
         path.write_text('\n'.join(lines) + '\n)\n')
         return path
 
-    @property
-    def moves_left(self) -> int:
-        return len(self._empty)
-
-    def cycle(self) -> List[tuple]:
-        """One move of an agent that shares its place into an empty one: the directives."""
+    def _count(self) -> Dict[str, int]:
         count: Dict[str, int] = {}
         for place in self.at.values():
             count[place] = count.get(place, 0) + 1
-        while count[self.at[self._movable[-1]]] < 2:
-            self._movable.pop()
-        agent = self._movable.pop()
+        return count
+
+    @property
+    def moves_left(self) -> int:
+        # An agent moves only out of a place it shares (the place stays busy), never out of the dock.
+        sharing = sum(c - 1 for place, c in self._count().items() if place != 'dock' and c > 1)
+        return min(len(self._empty), sharing)
+
+    def cycle(self) -> List[tuple]:
+        """One move of an agent that shares its place into an empty one: the directives."""
+        count = self._count()
+        agent = next(a for a in reversed(self._movable) if count[self.at[a]] >= 2)
+        self._movable.remove(agent)
         old, new = self.at[agent], self._empty.pop(0)
         self.at[agent] = new
         return [('REPLACE OBJECTPROP IND', 'locatedAt', agent, new, old)]
@@ -236,7 +244,7 @@ def _run(node: BenchNode, path: pathlib.Path, shape, reasoner: str, cycles: int,
          budget_s: float, reference: str) -> dict:
     deadline = Deadline(budget_s)
     result = {'load_s': None, 'first_s': None, 'cycles': [], 'wrong': 0, 'note': '',
-              'reasoning': ''}
+              'reasoning': '', 'steps': {}}
 
     def call(*words, what: str):
         if deadline.expired():
@@ -252,14 +260,18 @@ def _run(node: BenchNode, path: pathlib.Path, shape, reasoner: str, cycles: int,
                                         what='LOAD')
         result['reasoning'] = loaded.error_description
         result['first_s'], _ = call('REASON', what='first REASON')
-        for _ in range(min(cycles, shape.moves_left)):
+        for _ in range(cycles):
+            if shape.moves_left <= 0:
+                break
             spent = 0.0
             for directive in shape.cycle() + [('REASON',)]:
                 seconds, _ = call(*directive, what='a cycle')
                 spent += seconds
+                result['steps'].setdefault(' '.join(directive[:2]), []).append(seconds)
             for question, expected in shape.questions():
                 seconds, answer = call(*question, what='a question')
                 spent += seconds
+                result['steps'].setdefault(' '.join(question[:2]), []).append(seconds)
                 result['wrong'] += _short(answer) != expected
             result['cycles'].append(spent)
         result['memory'] = node.memory()
@@ -273,31 +285,40 @@ def _run(node: BenchNode, path: pathlib.Path, shape, reasoner: str, cycles: int,
     return result
 
 
-def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, scale: str) -> Dict[str, dict]:
+def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, scale: str, shapes: str = 'abcd',
+            reasoners: Optional[List[str]] = None, baseline=None) -> Dict[str, dict]:
     """results[shape][size][reasoner] = one run's figures.
 
     At full scale each run has a node of its own (its memory figure is that run's); the smoke
-    scale shares one node, to stay short in make test.
+    scale shares one node, to stay short in make test. `shapes` are the letters to run,
+    `reasoners` the names of REASONERS to run (all by default), `baseline` another core snapshot
+    run beside each (its rows are named "... (baseline)").
     """
+    cores = [('', snapshot)] + ([(' (baseline)', baseline)] if baseline is not None else [])
+    chosen = {name: reasoner for name, reasoner in REASONERS.items() if not reasoners or name in reasoners}
     results: Dict[str, dict] = {}
     # A LOAD may take the run's budget (the default reasoner limit, 30 s, stops the first reasoning at 10,000).
     limit = {'reasoner_timeout_ms': str(BUDGET_S[scale] * 1000)}
     shared = BenchNode(scratch, snapshot, parameters=limit) if scale == 'smoke' else None
     try:
         for label, make in SHAPES.items():
+            if label[1] not in shapes:
+                continue
             results[label] = {}
             course = label.startswith('(c)')
             for size in (COURSE_SIZES if course else SIZES)[scale]:
                 path = make(size).write(scratch / f'shape_{label[1]}_{size}.ofn')
                 results[label][size] = {}
-                for index, (name, reasoner) in enumerate(REASONERS.items()):
+                runs = [(name + suffix, reasoner, core) for name, reasoner in chosen.items()
+                        for suffix, core in cores]
+                for index, (name, reasoner, core) in enumerate(runs):
                     if course and reasoner == WHOLE and size > WHOLE_COURSE_UP_TO:
                         results[label][size][name] = {
                             'load_s': None, 'first_s': None, 'cycles': [], 'wrong': 0, 'reasoning': '',
                             'note': f'not run: past {WHOLE_COURSE_UP_TO:,} locations the whole-ontology'
                                     ' Openllet does not finish a cycle within the budget'}
                         continue
-                    node = shared or BenchNode(scratch, snapshot, parameters=limit)
+                    node = (shared if core is snapshot else None) or BenchNode(scratch, core, parameters=limit)
                     try:
                         results[label][size][name] = _run(
                             node, path, make(size), reasoner, CYCLES[scale], BUDGET_S[scale],
@@ -327,6 +348,10 @@ def render(results: Dict[str, dict]) -> str:
                 p50 = _p50(run)
                 ratio = f'{whole / p50:.1f}x' if p50 and whole else '-'
                 memory = run.get('memory', {}).get('core', {}).get('peak_mib')
+                baseline = _p50(runs.get(name + ' (baseline)', {'cycles': []}))
+                if baseline and p50:
+                    run = dict(run, note=f'baseline p50 {baseline:.1f} ms: {baseline / p50:.1f}x '
+                                         + (run['note'] or run['reasoning']))
                 lines.append('| ' + ' | '.join([
                     label, f'{size:,}', name,
                     f'{run["load_s"]:.1f} s' if run['load_s'] is not None else '-',
@@ -340,10 +365,36 @@ def render(results: Dict[str, dict]) -> str:
     return '\n'.join(lines)
 
 
+class _Baseline:
+    """Another build of the core, run as it is (BenchNode needs only its jar)."""
+
+    def __init__(self, jar: str):
+        self.jar = pathlib.Path(jar).resolve()
+        if not self.jar.is_file() or not (self.jar.parent / 'lib').is_dir():
+            raise SystemExit(f'--baseline-jar: {self.jar} with a lib/ folder beside it is missing')
+
+
 def main():
-    scale, scratch = script_scale_and_scratch(__doc__)
-    results = measure(scratch, CoreSnapshot(scratch), scale.name)
+    import argparse
+    import tempfile
+    parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
+    parser.add_argument('--smoke', action='store_true', help='tiny sizes, a few seconds')
+    parser.add_argument('--shapes', default='abcd', help='the shapes to run, by letter (default abcd)')
+    parser.add_argument('--reasoners', nargs='*', choices=list(REASONERS), help='the reasoners to run')
+    parser.add_argument('--baseline-jar', help='another core build to run beside this one')
+    options = parser.parse_args()
+    scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
+    baseline = _Baseline(options.baseline_jar) if options.baseline_jar else None
+    results = measure(scratch, CoreSnapshot(scratch), 'smoke' if options.smoke else 'full',
+                      options.shapes, options.reasoners, baseline)
     print(render(results))
+    print('\nWhere a cycle goes (p50 per directive, ms):')
+    for label, sizes in results.items():
+        for size, runs in sizes.items():
+            for name, run in runs.items():
+                steps = ', '.join(f'{words} {statistics.median(times) * 1000:.1f}'
+                                  for words, times in run.get('steps', {}).items())
+                print(f'- {label}, {size:,}, {name}: {steps}')
 
 
 if __name__ == '__main__':

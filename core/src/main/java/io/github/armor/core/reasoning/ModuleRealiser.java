@@ -46,7 +46,7 @@ final class ModuleRealiser {
     private final List<OWLAxiom> schema;
     private final OWLOntologyManager scratch = OWLManager.createOWLOntologyManager();
     private final TypeProfile.Interner profiles = new TypeProfile.Interner();
-    private final ModuleShapes shapes = new ModuleShapes(scratch);
+    private final ModuleShapes shapes;
     // Over an upper ontology: the classes realised (null: every class), and the schema cut to what modules use.
     private final Set<OWLClass> tracked;
     private final SchemaSlices slices;
@@ -66,6 +66,7 @@ final class ModuleRealiser {
         this.factory = factory;
         this.configuration = configuration;
         this.schema = List.copyOf(schema);
+        this.shapes = new ModuleShapes(scratch, this.schema);
         this.tracked = tracked == null ? null : Set.copyOf(tracked);
         this.slices = sliced ? new SchemaSlices(scratch, this.schema) : null;
     }

@@ -5,20 +5,28 @@ import io.github.armor.core.reasoning.AboxModules.Module;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import org.semanticweb.owlapi.model.AxiomType;
 import org.semanticweb.owlapi.model.IRI;
 import org.semanticweb.owlapi.model.OWLAxiom;
 import org.semanticweb.owlapi.model.OWLClassAssertionAxiom;
+import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLDataProperty;
+import org.semanticweb.owlapi.model.OWLDataPropertyAssertionAxiom;
 import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLIndividual;
+import org.semanticweb.owlapi.model.OWLLiteral;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.OWLPropertyAssertionAxiom;
+import org.semanticweb.owlapi.model.OWLSubDataPropertyOfAxiom;
 import org.semanticweb.owlapi.util.OWLObjectDuplicator;
+import org.semanticweb.owlapi.vocab.OWL2Datatype;
 
 /**
  * Modules that are the same up to the names of their individuals: a room with three robots in it
@@ -30,6 +38,16 @@ import org.semanticweb.owlapi.util.OWLObjectDuplicator;
  * names, so the reasoner's answer for one, renamed, is its answer for the other. The order only
  * decides how often shapes match: a tie broken differently gives a different shape (one more
  * module reasoned on), never a wrong answer.
+ *
+ * <p>Data values are renamed too where the schema cannot tell one from another: a property
+ * ({@link #blind}) that no schema axiom mentions but to say it is functional, has a domain, or
+ * sits in a hierarchy of such properties. What the schema says of such values is only how many
+ * distinct ones an individual has, so a renaming of a module's values that keeps them distinct
+ * where they were (one numbering per module, by value: 1 and 1.0 stay equal) and keeps each
+ * literal's datatype and validity maps models to models: the robot's clock at 1040 and at 1080
+ * is one shape, reasoned on once. Only literals that are valid integers, decimals or strings are
+ * renamed (an ill-typed literal makes an ontology inconsistent; a placeholder would not), and a
+ * module whose other assertions mention a data property keeps its values.
  */
 final class ModuleShapes {
     /** Modules larger than this are not compared (rarely repeated, and costly to rename). */
@@ -52,17 +70,88 @@ final class ModuleShapes {
     };
 
     private long reused;
+    private final Set<OWLDataProperty> seen = new HashSet<>();
+    private final Map<OWLDataProperty, Set<OWLDataProperty>> related = new HashMap<>();
+    private final Map<OWLDataProperty, Boolean> blindness = new java.util.concurrent.ConcurrentHashMap<>();
 
-    ModuleShapes(OWLOntologyManager manager) {
+    /** @param schema what every module is reasoned with (it decides which values are {@link #blind}) */
+    ModuleShapes(OWLOntologyManager manager, List<OWLAxiom> schema) {
         this.manager = manager;
+        for (OWLAxiom axiom : schema) {
+            if (!axiom.isLogicalAxiom()) {
+                continue;
+            }
+            if (axiom instanceof OWLSubDataPropertyOfAxiom || axiom.isOfType(AxiomType.EQUIVALENT_DATA_PROPERTIES)) {
+                List<OWLDataProperty> members = axiom.dataPropertiesInSignature().toList();
+                members.forEach(a -> members.forEach(b -> related.computeIfAbsent(a, k -> new HashSet<>()).add(b)));
+            } else if (!axiom.isOfType(AxiomType.FUNCTIONAL_DATA_PROPERTY, AxiomType.DATA_PROPERTY_DOMAIN)) {
+                axiom.dataPropertiesInSignature().forEach(seen::add);
+            }
+        }
+    }
+
+    /** Whether the schema cannot tell one value of the property from another (nor of any property in its hierarchy). */
+    private boolean blind(OWLDataProperty property) {
+        return blindness.computeIfAbsent(property, this::blindInSchema);
+    }
+
+    private boolean blindInSchema(OWLDataProperty property) {
+        Set<OWLDataProperty> reached = new HashSet<>(Set.of(property));
+        List<OWLDataProperty> frontier = new ArrayList<>(reached);
+        while (!frontier.isEmpty()) {
+            OWLDataProperty next = frontier.remove(frontier.size() - 1);
+            if (seen.contains(next)) {
+                return false;
+            }
+            for (OWLDataProperty other : related.getOrDefault(next, Set.of())) {
+                if (reached.add(other)) {
+                    frontier.add(other);
+                }
+            }
+        }
+        return true;
+    }
+
+    /** The module's assertions with the values of blind properties numbered in order of first appearance. */
+    private Set<OWLAxiom> valuesRenamed(Set<OWLAxiom> axioms) {
+        for (OWLAxiom axiom : axioms) {
+            if (!(axiom instanceof OWLDataPropertyAssertionAxiom) && axiom.dataPropertiesInSignature().findAny().isPresent()) {
+                return axioms;
+            }
+        }
+        OWLDataFactory data = manager.getOWLDataFactory();
+        Map<Builtins.DataValue, Integer> numbers = new HashMap<>();
+        Set<OWLAxiom> renamed = new LinkedHashSet<>();
+        for (OWLAxiom axiom : axioms) {
+            if (axiom instanceof OWLDataPropertyAssertionAxiom value && renameable(value.getObject())
+                    && blind(value.getProperty().asOWLDataProperty())) {
+                int number = numbers.computeIfAbsent(Builtins.DataValue.of(value.getObject()), k -> numbers.size() + 1);
+                axiom = data.getOWLDataPropertyAssertionAxiom(value.getProperty(), value.getSubject(),
+                        data.getOWLLiteral(String.valueOf(number), value.getObject().getDatatype()));
+            }
+            renamed.add(axiom);
+        }
+        return renamed;
+    }
+
+    private static boolean renameable(OWLLiteral literal) {
+        if (literal.hasLang()) {
+            return false;
+        }
+        String text = literal.getLiteral();
+        return literal.getDatatype().isString()
+                || literal.getDatatype().isInteger() && text.matches("[+-]?[0-9]+")
+                || literal.getDatatype().getIRI().equals(OWL2Datatype.XSD_DECIMAL.getIRI())
+                && text.matches("[+-]?([0-9]+(\\.[0-9]*)?|\\.[0-9]+)");
     }
 
     /** The shape of a module with these assertions, or null when it is not compared (hub, size, anonymous individuals). */
-    Shape shapeOf(Module module, Set<OWLAxiom> axioms) {
+    Shape shapeOf(Module module, Set<OWLAxiom> asserted) {
         // The hub's individuals are named in the schema: renaming them would change what it says.
         if (module.hub || module.members.size() > LARGEST || module.members.stream().anyMatch(OWLIndividual::isAnonymous)) {
             return null;
         }
+        Set<OWLAxiom> axioms = valuesRenamed(asserted);
         Map<OWLIndividual, List<Long>> roles = new HashMap<>();
         for (OWLAxiom axiom : axioms) {
             List<OWLIndividual> about = AboxLinks.individualsOf(axiom).toList();

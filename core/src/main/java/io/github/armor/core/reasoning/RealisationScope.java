@@ -48,7 +48,8 @@ public final class RealisationScope {
 
     /** Whether an ontology imports classes it does not name itself (an upper ontology's). */
     public static boolean overUpperOntology(OWLOntology ontology) {
-        return importsClasses(ontology, ownClasses(ontology));
+        // Asked after every change (durability keeps the hierarchy of one): without imports, no axiom is read.
+        return ontology.importsDeclarations().findAny().isPresent() && importsClasses(ontology, ownClasses(ontology));
     }
 
     private static boolean importsClasses(OWLOntology ontology, Set<OWLClass> own) {

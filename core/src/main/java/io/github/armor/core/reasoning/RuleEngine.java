@@ -48,8 +48,11 @@ import org.semanticweb.owlapi.model.parameters.Imports;
  *
  * <p>The work of a change is the matches it makes or ends: a moved robot joins its new place's
  * neighbours; a clock value replaced by the next is joined from both side by side ({@link
- * #replaced}): each room's last visit is read once and compared twice, and only the rooms whose
- * urgency changed move a count. What the modules reason on again is only what changed.
+ * #replaced}), and where the rest of the rule enumerates values that only linear comparisons
+ * read, only the values in the ranges where those comparisons differ before and after are
+ * visited ({@link FlipRanges}, over each property's values in numeric order, {@link
+ * OrderedValues}): a tick costs the rooms whose urgency changed, not every room. What the modules
+ * reason on again is only what changed.
  *
  * <p>Why not Jena's forward (RETE) engine, which has built-ins: its retraction is not exact.
  * With Jena 3.10's FORWARD_RETE, the rule (?a p ?b) -> (?b q x) and the facts (a1 p b), (a2 p b),
@@ -72,6 +75,7 @@ final class RuleEngine {
     private final OWLDataFactory factory;
     private final Map<OWLObjectProperty, Relation> edges = new HashMap<>();
     private final Map<OWLDataProperty, Map<OWLNamedIndividual, Map<DataValue, Integer>>> values = new HashMap<>();
+    private final Map<OWLDataProperty, OrderedValues> ordered = new HashMap<>();
     private final Map<OWLClass, Set<OWLNamedIndividual>> typed = new HashMap<>();
     private final Map<OWLNamedIndividual, Set<OWLClass>> typesOf = new HashMap<>();
     private final Map<OWLNamedIndividual, List<Set<OWLIndividual>>> differentSets = new HashMap<>();
@@ -86,6 +90,7 @@ final class RuleEngine {
         this.factory = factory;
         program.edgeProperties.forEach(p -> edges.put(p, new Relation()));
         program.valueProperties.forEach(p -> values.put(p, new HashMap<>()));
+        program.valueProperties.forEach(p -> ordered.put(p, new OrderedValues()));
         program.bodyClasses.forEach(c -> typed.put(c, new HashSet<>()));
     }
 
@@ -114,6 +119,7 @@ final class RuleEngine {
             r.in.clear();
         });
         values.values().forEach(Map::clear);
+        ordered.values().forEach(OrderedValues::clear);
         typed.values().forEach(Set::clear);
         this.typesOf.clear();
         support.clear();
@@ -246,6 +252,8 @@ final class RuleEngine {
         // The store holds the new value before any conclusion moves (the step is one change).
         held.remove(old);
         held.put(now, 1);
+        ordered.get(image).remove(subject, old);
+        ordered.get(image).add(subject, now);
         List<Fact> came = new ArrayList<>();
         List<Fact> went = new ArrayList<>();
         delta.forEach((conclusion, change) -> {
@@ -310,6 +318,23 @@ final class RuleEngine {
                 Object other = after[term.variable()];
                 same &= one == null ? other == null : one.equals(other);
                 binds |= one == null || other == null;
+            }
+        }
+        if (was && is && binds) {
+            FlipRanges.Flips flips = FlipRanges.of(rule, plan, step, before, after);
+            if (flips != null) {
+                // Only the values whose matches differ before and after are joined (FlipRanges).
+                Atom enumerated = rule.body().get(flips.atom());
+                ordered.get((OWLDataProperty) enumerated.predicate()).within(flips.ranges(), (subject, value) -> {
+                    Object[] nextBefore = before.clone();
+                    Object[] nextAfter = after.clone();
+                    nextBefore[flips.subject()] = subject;
+                    nextAfter[flips.subject()] = subject;
+                    nextBefore[flips.value()] = value;
+                    nextAfter[flips.value()] = value;
+                    pairedJoin(ruleNumber, rule, plan, step, nextBefore, nextAfter, true, true, unsure, delta);
+                });
+                return;
             }
         }
         if (same) {
@@ -449,6 +474,7 @@ final class RuleEngine {
             if (count == 0) {
                 // A value asserted twice (two literals of one value) is kept with the first literal.
                 held.put(value, 1);
+                ordered.get(image).add(subject, value);
                 appeared(fact);
             } else {
                 held.put(value, count + 1);
@@ -456,6 +482,7 @@ final class RuleEngine {
         } else if (count == 1) {
             went(fact);
             held.remove(value);
+            ordered.get(image).remove(subject, value);
             if (held.isEmpty()) {
                 bySubject.remove(subject);
             }

@@ -6,12 +6,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.github.armor.core.reference.ReasonerRegistry;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Random;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -361,6 +363,88 @@ class ModularEquivalenceTest {
         }
         int seen = urgentSeen;
         assertTrue(urgentSeen > steps / 4, () -> run + ": rooms must be urgent in many steps, not " + seen);
+        modular.dispose();
+    }
+
+    /**
+     * The clock's ticks reach only the rooms whose comparison flips (an ordered index of the
+     * visits, and the value ranges where the URGENT rule's built-ins differ before and after):
+     * ticks that flip some rooms and not others, a tick backwards, a tick onto a value that
+     * equals a room's visit plus the threshold, two rooms visited at once, a tick that changes
+     * nothing, and a threshold that moves; each of the URGENT rule's forms, against Openllet on
+     * the whole ontology.
+     */
+    @ParameterizedTest(name = "URGENT written as form {0}")
+    @CsvSource({"0", "1", "2", "3"})
+    void clockTicksMatchOpenlletOnTheWholeOntology(int form) throws Exception {
+        random.setSeed(form);
+        manager = OWLManager.createOWLOntologyManager();
+        factory = manager.getOWLDataFactory();
+        String urgency = URGENCY_TESTS.get(form);
+        ontology = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(RULES_SCHEMA.formatted(urgency)));
+        CourseMap map = new CourseMap();
+        map.load();
+        // now = 1000, threshold 100: rooms on, just past, and before the boundary; two visited at once.
+        int[] visits = {900, 899, 901, 950, 860, 901};
+        for (int i = 0; i < rooms.size(); i++) {
+            manager.applyChanges(map.replace("visitedAt", rooms.get(i), visits[i]));
+        }
+        OWLReasonerFactory openllet = ReasonerRegistry.factory("PELLET");
+        ModularReasoner modular = new ModularReasoner("PELLET", ReasonerRegistry.factory("PELLET"), ontology,
+                new SimpleConfiguration());
+        modular.isConsistent();
+        compare(openllet, modular, form + ", the loaded map");
+        Set<Set<String>> urgentSets = new HashSet<>();
+        // Each is the clock's new value, but 51 and 100, which are the threshold's.
+        for (int value : new int[] {1001, 1040, 1050, 1050, 999, 51, 960, 100, 1100, 700, 1300}) {
+            List<OWLOntologyChange> tick = value <= 100 ? map.replace("urgencyThreshold", map.robot, value)
+                    : map.replace("now", map.robot, value);
+            manager.applyChanges(tick);
+            modular.flush();
+            String after = form + ", after " + tick;
+            assertTrue(modular.handlesRemovals(), () -> "rules must stay beside the modules: " + modular.wholeBecause()
+                    + " " + after);
+            compare(openllet, modular, after);
+            urgentSets.add(names(modular.getInstances(cls("URGENT"), false).entities()));
+        }
+        // The ticks must have moved URGENT both ways, through no room, some rooms and others.
+        assertTrue(urgentSets.size() >= 3 && urgentSets.contains(Set.of())
+                && urgentSets.stream().anyMatch(set -> !set.isEmpty() && set.size() < rooms.size()),
+                () -> "URGENT took only " + urgentSets);
+        modular.dispose();
+    }
+
+    /**
+     * Modules alike but for the values of a data property the schema only calls functional share
+     * one reasoned result; values the schema reads (here through a super-property with a facet)
+     * keep modules apart.
+     */
+    @Test
+    void modulesAlikeButForValuesTheSchemaCannotReadShareAResult() throws Exception {
+        manager = OWLManager.createOWLOntologyManager();
+        factory = manager.getOWLDataFactory();
+        StringBuilder document = new StringBuilder("""
+                Prefix(:=<http://www.example.org/robotics#>)
+                Prefix(xsd:=<http://www.w3.org/2001/XMLSchema#>)
+                Ontology(<http://www.example.org/robotics>
+                FunctionalDataProperty(:now) DataPropertyDomain(:now :Robot) SubDataPropertyOf(:reading :level)
+                EquivalentClasses(:High DataSomeValuesFrom(:level DatatypeRestriction(xsd:integer
+                    xsd:minExclusive "50"^^xsd:integer)))
+                """);
+        int[] readings = {40, 40, 60, 60, 45, 45};
+        for (int i = 0; i < readings.length; i++) {
+            document.append("ClassAssertion(:Robot :r%d) DataPropertyAssertion(:now :r%d \"%d\"^^xsd:integer)"
+                    .formatted(i, i, 1000 + 10 * i)).append(" DataPropertyAssertion(:reading :r%d \"%d\"^^xsd:integer)\n"
+                    .formatted(i, readings[i]));
+        }
+        ontology = manager.loadOntologyFromOntologyDocument(new StringDocumentSource(document + ")"));
+        ModularReasoner modular = new ModularReasoner("PELLET", ReasonerRegistry.factory("PELLET"), ontology,
+                new SimpleConfiguration());
+        modular.isConsistent();
+        compare(ReasonerRegistry.factory("PELLET"), modular, "the loaded robots");
+        assertEquals(Set.of("r2", "r3"), names(modular.getInstances(cls("High"), false).entities()));
+        assertTrue(modular.reusedShapes() >= 3, () -> "robots alike but for the clock must share a result, not "
+                + modular.reusedShapes());
         modular.dispose();
     }
 
