@@ -153,6 +153,8 @@ class HistoryFollower:
         self.reference, self.last = reference, since
         self.changes: List[dict] = []
         self.missed = 0
+        # The run's own last catch_up may meet the thread's: one at a time, or both append a change.
+        self._reading = threading.Lock()
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._follow, daemon=True)
         self._thread.start()
@@ -162,11 +164,12 @@ class HistoryFollower:
             self.catch_up()
 
     def catch_up(self):
-        changes, missed = changes_since(self.caller, 'auditor', self.reference, self.last)
-        self.missed += missed
-        self.changes += changes
-        if changes:
-            self.last = changes[-1]['revision']
+        with self._reading:
+            changes, missed = changes_since(self.caller, 'auditor', self.reference, self.last)
+            self.missed += missed
+            self.changes += changes
+            if changes:
+                self.last = changes[-1]['revision']
 
     def stop(self):
         self._stop.set()

@@ -10,6 +10,7 @@ import concurrent.futures
 import difflib
 import json
 import os
+import signal
 import sys
 
 from armor_contract.events import CHANGE_QOS, CHANGE_TOPIC
@@ -29,6 +30,7 @@ from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.exceptions import InvalidParameterTypeException
 from rclpy.node import Node
+from rclpy.signals import SignalHandlerOptions
 
 # The client name of the directives the node sends on its own (preloading, restoring).
 NODE_CLIENT = 'armor_service'
@@ -282,7 +284,10 @@ def _refuse_list(request, response, description: str) -> None:
 
 def main(args=None, on_ready=None):
     """Serve until interrupted; on_ready(node) is called once the node serves."""
-    rclpy.init(args=args)
+    # Ctrl-C and SIGTERM end the spin here, not in rclpy's handler: rclpy's would invalidate the
+    # context first, and the lines the core says while it stops could no longer reach /rosout.
+    rclpy.init(args=args, signal_handler_options=SignalHandlerOptions.NO)
+    signal.signal(signal.SIGTERM, signal.default_int_handler)
     node = None
     try:
         node = ArmorService()

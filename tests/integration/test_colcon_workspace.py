@@ -15,6 +15,7 @@ import re
 import shutil
 import signal
 import subprocess
+import time
 
 import pytest
 
@@ -48,7 +49,9 @@ def in_workspace(workspace, command):
               + (f'source {setup} && ' if setup.exists() else '') + command)
     env = {'HOME': os.environ.get('HOME', '/root'), 'PATH': '/usr/local/bin:/usr/bin:/bin',
            'LANG': 'C.UTF-8', 'ROS_DOMAIN_ID': os.environ['ROS_DOMAIN_ID'],
-           'ARMOR_CALL_RELAY_IDLE_S': '60'}
+           'ARMOR_CALL_RELAY_IDLE_S': '60',
+           # Lines reach the log file as they are said, not when a buffer fills.
+           'RCUTILS_LOGGING_BUFFERED_STREAM': '0', 'PYTHONUNBUFFERED': '1'}
     return {'args': ['bash', '-c', script], 'cwd': workspace, 'env': env}
 
 
@@ -107,11 +110,14 @@ def test_colcon_builds_every_package_and_its_install_space_serves(tmp_path):
         catalogue = run(workspace, 'armor call - GET CATALOGUE')
         assert catalogue.returncode == 0, catalogue.stderr
         assert 'PDDL' in catalogue.stdout, catalogue.stdout
+        deadline = time.monotonic() + 60
+        while 'ARMOR ready' not in serve_log.read_text() and time.monotonic() < deadline:
+            time.sleep(0.5)
     finally:
         run(workspace, 'python -c "from armor_client.cli import call_relay; call_relay.stop()"')
         node.send_signal(signal.SIGINT)
         try:
-            node.wait(timeout=30)
+            node.wait(timeout=60)
         except subprocess.TimeoutExpired:
             node.kill()
             node.wait()

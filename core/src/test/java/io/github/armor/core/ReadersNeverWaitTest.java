@@ -121,6 +121,9 @@ class ReadersNeverWaitTest {
                     .getAsJsonObject());
             assertFalse(answer.has("error"), () -> request + " waited for the writer: " + answer);
         }
+        com.google.gson.JsonObject graph = views.answer(com.google.gson.JsonParser.parseString(
+                "{\"name\": \"graph\", \"reference\": \"map\"}").getAsJsonObject());
+        assertFalse(graph.get("inferred_links").getAsBoolean(), "a held reference's graph is its published state's");
         com.google.gson.JsonObject page = views.answer(com.google.gson.JsonParser.parseString(
                 "{\"name\": \"individuals\", \"reference\": \"map\", \"search\": \"kitchen\"}")
                 .getAsJsonObject());

@@ -61,8 +61,26 @@ final class PropertyGraph {
     JsonObject graph(String referenceName, List<String> propertyNames, String className, String focusName,
                      int limit) {
         Reference reference = reads.reference(referenceName);
-        Optional<Published> published = reads.offLock(reference);
-        InferredState state = published.map(Published::state).orElse(null);
+        Optional<InferredState> published = reads.offLock(reference).map(Published::state);
+        // Inferred links (dashed) need the reasoner, so a free reference is read itself, in
+        // slices; while a writer holds it, its last published state answers (asserted links),
+        // so a page never waits for a writer.
+        if (published.isPresent() && (reference.isBusy() || reference.othersWaiting())) {
+            return draw(reference, propertyNames, className, focusName, limit, published.get());
+        }
+        try {
+            return draw(reference, propertyNames, className, focusName, limit, null);
+        } catch (ArmorException e) {
+            if (e.exitCode() != ExitCode.TIMEOUT || published.isEmpty()) {
+                throw e;
+            }
+            return draw(reference, propertyNames, className, focusName, limit, published.get());
+        }
+    }
+
+    /** The graph read from {@code state}, off the lock, or (null) from the reference and its reasoner. */
+    private JsonObject draw(Reference reference, List<String> propertyNames, String className, String focusName,
+                            int limit, InferredState state) {
         Scope scope = state != null ? scope(reference, propertyNames, className, focusName, state)
                 : reads.whole(reference, r -> scope(r, propertyNames, className, focusName, null));
         Set<OWLNamedIndividual> candidates = new HashSet<>(scope.candidates());
