@@ -23,12 +23,10 @@ import org.semanticweb.owl.explanation.api.ExplanationGeneratorInterruptedExcept
 import org.semanticweb.owl.explanation.api.NotEntailedException;
 import org.semanticweb.owl.explanation.api.ExplanationProgressMonitor;
 import org.semanticweb.HermiT.ReasonerFactory;
-import org.semanticweb.owl.explanation.impl.blackbox.AllInOneExpansionStrategy;
 import org.semanticweb.owl.explanation.impl.blackbox.Configuration;
 import org.semanticweb.owl.explanation.impl.blackbox.DivideAndConquerContractionStrategy;
 import org.semanticweb.owl.explanation.impl.blackbox.EntailmentCheckerFactory;
 import org.semanticweb.owl.explanation.impl.blackbox.InitialEntailmentCheckStrategy;
-import org.semanticweb.owl.explanation.impl.blackbox.SimpleContractionStrategy;
 import org.semanticweb.owl.explanation.impl.blackbox.StructuralTypePriorityExpansionStrategy;
 import org.semanticweb.owl.explanation.impl.blackbox.checker.BlackBoxExplanationGeneratorFactory;
 import org.semanticweb.owl.explanation.impl.blackbox.checker.InconsistentOntologyExplanationGeneratorFactory;
@@ -77,8 +75,6 @@ final class Justifications {
     private static final int UNBOUNDED = Integer.MAX_VALUE;
     // Links from the fact's individuals whose assertions are searched, in turn.
     private static final int[] RADII = {1, 2, 4, UNBOUNDED};
-    // Up to this many axioms, leaving each out in turn takes fewer checks than halving the set.
-    private static final int SMALL_SEARCH = 32;
 
     private Justifications() {}
 
@@ -236,22 +232,14 @@ final class Justifications {
                         manager.getOWLDataFactory(), managers, leftMs);
             } else {
                 EntailmentCheckerFactory<OWLAxiom> checks = RememberingEntailmentChecker.factory(
-                        new SatisfiabilityEntailmentCheckerFactory(factory instanceof ReasonerFactory
+                        new SatisfiabilityEntailmentCheckerFactory(factory.getClass() == ReasonerFactory.class
                                 ? new UntimedHermiT() : factory, managers), manager);
-                // A small part (a fact's module near its individuals) is checked whole, then
-                // each axiom left out in turn: a check per axiom, fewer than growing the set and
-                // halving it (measured: 12 checks against 15 for a fact of 12 axioms). A large
-                // one is grown from the fact's signature then halved, as the library does. For
-                // the growing, PERFORM: a part that does not entail the fact answers none (and
-                // the whole is searched) instead of a wrong set; the library's shorter
-                // constructors leave it unset (owlexplanation 5.0.0).
-                boolean small = axioms.size() <= SMALL_SEARCH;
+                // PERFORM: a part of the ontology that does not entail the fact answers none (and
+                // the whole is searched) instead of a wrong set. The library's shorter
+                // constructors leave this strategy unset (owlexplanation 5.0.0).
                 generators = new BlackBoxExplanationGeneratorFactory<>(new Configuration<>(checks,
-                        small ? new AllInOneExpansionStrategy<>()
-                                : new StructuralTypePriorityExpansionStrategy<>(InitialEntailmentCheckStrategy.PERFORM,
-                                managers),
-                        small ? new SimpleContractionStrategy<>() : new DivideAndConquerContractionStrategy<>(),
-                        monitor, managers));
+                        new StructuralTypePriorityExpansionStrategy<>(InitialEntailmentCheckStrategy.PERFORM, managers),
+                        new DivideAndConquerContractionStrategy<>(), monitor, managers));
             }
             boolean partial = false;
             Set<Explanation<OWLAxiom>> complete = Set.of();
