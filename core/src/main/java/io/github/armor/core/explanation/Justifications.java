@@ -30,7 +30,6 @@ import org.semanticweb.owl.explanation.impl.blackbox.InitialEntailmentCheckStrat
 import org.semanticweb.owl.explanation.impl.blackbox.StructuralTypePriorityExpansionStrategy;
 import org.semanticweb.owl.explanation.impl.blackbox.checker.BlackBoxExplanationGeneratorFactory;
 import org.semanticweb.owl.explanation.impl.blackbox.checker.InconsistentOntologyExplanationGeneratorFactory;
-import org.semanticweb.owl.explanation.impl.blackbox.checker.SatisfiabilityEntailmentCheckerFactory;
 import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.model.AxiomType;
 import org.semanticweb.owlapi.model.OWLAxiom;
@@ -232,8 +231,7 @@ final class Justifications {
                         manager.getOWLDataFactory(), managers, leftMs);
             } else {
                 EntailmentCheckerFactory<OWLAxiom> checks = RememberingEntailmentChecker.factory(
-                        new SatisfiabilityEntailmentCheckerFactory(factory.getClass() == ReasonerFactory.class
-                                ? new UntimedHermiT() : factory, managers), manager);
+                        factory.getClass() == ReasonerFactory.class ? new UntimedHermiT() : factory, manager);
                 // PERFORM: a part of the ontology that does not entail the fact answers none (and
                 // the whole is searched) instead of a wrong set. The library's shorter
                 // constructors leave this strategy unset (owlexplanation 5.0.0).

@@ -7,11 +7,23 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.stream.Collectors;
+import org.semanticweb.HermiT.ReasonerFactory;
 import org.semanticweb.owl.explanation.impl.blackbox.EntailmentChecker;
 import org.semanticweb.owl.explanation.impl.blackbox.EntailmentCheckerFactory;
 import org.semanticweb.owlapi.model.OWLAxiom;
 import org.semanticweb.owlapi.model.OWLEntity;
+import org.semanticweb.owl.explanation.impl.blackbox.checker.SatisfiabilityEntailmentCheckerFactory;
+import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.OWLOntologyCreationException;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
+import org.semanticweb.owlapi.reasoner.FreshEntityPolicy;
+import org.semanticweb.owlapi.reasoner.IndividualNodeSetPolicy;
+import org.semanticweb.owlapi.reasoner.InconsistentOntologyException;
+import org.semanticweb.owlapi.reasoner.NullReasonerProgressMonitor;
+import org.semanticweb.owlapi.reasoner.OWLReasoner;
+import org.semanticweb.owlapi.reasoner.OWLReasonerConfiguration;
+import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
+import org.semanticweb.owlapi.reasoner.SimpleConfiguration;
 import uk.ac.manchester.cs.owlapi.modularity.ModuleType;
 import uk.ac.manchester.cs.owlapi.modularity.SyntacticLocalityModuleExtractor;
 
@@ -27,12 +39,18 @@ import uk.ac.manchester.cs.owlapi.modularity.SyntacticLocalityModuleExtractor;
  *   inside one known not to entail it does not: answered without the reasoner.</li>
  * </ul>
  * Every answer is the one the reasoner would give on the set: only the number of calls changes.
+ * HermiT is asked with its own entailment check ({@link #askHermiT}).
  */
 final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> {
+    // Fresh entities allowed: a set left without an axiom may not name the fact's individual.
+    private static final OWLReasonerConfiguration CHECKS = new SimpleConfiguration(new NullReasonerProgressMonitor(),
+            FreshEntityPolicy.ALLOW, Long.MAX_VALUE, IndividualNodeSetPolicy.BY_SAME_AS);
+    // The library's checker: its signature and module, and the checks of facts the reasoner cannot check itself.
     private final EntailmentChecker<OWLAxiom> reasoner;
     private final OWLOntologyManager manager;
     private final Set<OWLEntity> signature;
     private final Memory memory;
+    private final OWLReasonerFactory reasoners;
     private Set<OWLAxiom> lastAxioms = Set.of();
     private Set<OWLAxiom> lastEntailing = Set.of();
     private int reasonerCalls;
@@ -40,23 +58,25 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
     /** What the reasoner answered about one fact: the sets (modules) that entail it and those that do not. */
     private record Memory(List<Set<OWLAxiom>> entailing, List<Set<OWLAxiom>> notEntailing) {}
 
-    private RememberingEntailmentChecker(EntailmentChecker<OWLAxiom> reasoner, OWLOntologyManager manager,
-                                         Memory memory) {
+    private RememberingEntailmentChecker(EntailmentChecker<OWLAxiom> reasoner, OWLReasonerFactory reasoners,
+                                         OWLOntologyManager manager, Memory memory) {
         this.reasoner = reasoner;
+        this.reasoners = reasoners;
         this.manager = manager;
         this.memory = memory;
         this.signature = reasoner.getEntailmentSignature();
     }
 
     /**
-     * Checkers for {@code reasoners}' entailments that remember the reasoner's answers; the
+     * Checkers of entailments by {@code reasoners}' reasoners that remember their answers; the
      * library makes one for each justification it looks for, and those of one fact share what
      * they learnt. Modules are made with {@code manager}.
      */
-    static EntailmentCheckerFactory<OWLAxiom> factory(EntailmentCheckerFactory<OWLAxiom> reasoners,
-                                                      OWLOntologyManager manager) {
+    static EntailmentCheckerFactory<OWLAxiom> factory(OWLReasonerFactory reasoners, OWLOntologyManager manager) {
+        EntailmentCheckerFactory<OWLAxiom> library = new SatisfiabilityEntailmentCheckerFactory(reasoners,
+                () -> manager);
         Map<OWLAxiom, Memory> memories = new HashMap<>();
-        return fact -> new RememberingEntailmentChecker(reasoners.createEntailementChecker(fact), manager,
+        return fact -> new RememberingEntailmentChecker(library.createEntailementChecker(fact), reasoners, manager,
                 memories.computeIfAbsent(fact, f -> new Memory(new ArrayList<>(), new ArrayList<>())));
     }
 
@@ -81,12 +101,43 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
             }
         }
         reasonerCalls++;
-        boolean entailed = reasoner.isEntailed(module);
+        boolean entailed = reasoners instanceof ReasonerFactory ? askHermiT(module) : reasoner.isEntailed(module);
         (entailed ? memory.entailing() : memory.notEntailing()).add(module);
         if (entailed) {
             lastEntailing = module;
         }
         return entailed;
+    }
+
+    /**
+     * HermiT's own entailment check where it has one: the library's instead turns the fact into
+     * a class that must be unsatisfiable, which for an assertion puts a nominal in the ontology
+     * and costs HermiT a second tableau on every check. (Only HermiT: JFact's check fails on a
+     * reasoner that has not classified first.)
+     */
+    private boolean askHermiT(Set<OWLAxiom> module) {
+        OWLAxiom fact = reasoner.getEntailment();
+        OWLOntology ontology;
+        try {
+            ontology = manager.createOntology(module);
+        } catch (OWLOntologyCreationException e) {
+            throw new IllegalStateException(e);
+        }
+        try {
+            OWLReasoner checking = reasoners.createReasoner(ontology, CHECKS);
+            try {
+                if (checking.isEntailmentCheckingSupported(fact.getAxiomType())) {
+                    return checking.isEntailed(fact);
+                }
+            } catch (InconsistentOntologyException e) {
+                return true;
+            } finally {
+                checking.dispose();
+            }
+        } finally {
+            manager.removeOntology(ontology);
+        }
+        return reasoner.isEntailed(module);
     }
 
     /** A subset of {@code axioms} that entails the fact (the module, or a smaller set known to), if they do. */
