@@ -45,8 +45,8 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
     // Fresh entities allowed: a set left without an axiom may not name the fact's individual.
     private static final OWLReasonerConfiguration CHECKS = new SimpleConfiguration(new NullReasonerProgressMonitor(),
             FreshEntityPolicy.ALLOW, Long.MAX_VALUE, IndividualNodeSetPolicy.BY_SAME_AS);
-    // The library's checker: its signature and module, and the checks of facts the reasoner cannot check itself.
-    private final EntailmentChecker<OWLAxiom> reasoner;
+    // The library's checker: the signature, the module, and the check (but HermiT's, see askHermiT).
+    private final EntailmentChecker<OWLAxiom> library;
     private final OWLOntologyManager manager;
     private final Set<OWLEntity> signature;
     private final Memory memory;
@@ -58,13 +58,13 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
     /** What the reasoner answered about one fact: the sets (modules) that entail it and those that do not. */
     private record Memory(List<Set<OWLAxiom>> entailing, List<Set<OWLAxiom>> notEntailing) {}
 
-    private RememberingEntailmentChecker(EntailmentChecker<OWLAxiom> reasoner, OWLReasonerFactory reasoners,
+    private RememberingEntailmentChecker(EntailmentChecker<OWLAxiom> library, OWLReasonerFactory reasoners,
                                          OWLOntologyManager manager, Memory memory) {
-        this.reasoner = reasoner;
+        this.library = library;
         this.reasoners = reasoners;
         this.manager = manager;
         this.memory = memory;
-        this.signature = reasoner.getEntailmentSignature();
+        this.signature = library.getEntailmentSignature();
     }
 
     /**
@@ -84,8 +84,8 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
     public boolean isEntailed(Set<OWLAxiom> axioms) {
         lastAxioms = Set.copyOf(axioms);
         lastEntailing = Set.of();
-        if (axioms.contains(reasoner.getEntailment())) {
-            lastEntailing = Set.of(reasoner.getEntailment());
+        if (axioms.contains(library.getEntailment())) {
+            lastEntailing = Set.of(library.getEntailment());
             return true;
         }
         Set<OWLAxiom> module = module(axioms);
@@ -101,7 +101,7 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
             }
         }
         reasonerCalls++;
-        boolean entailed = reasoners instanceof ReasonerFactory ? askHermiT(module) : reasoner.isEntailed(module);
+        boolean entailed = reasoners instanceof ReasonerFactory ? askHermiT(module) : library.isEntailed(module);
         (entailed ? memory.entailing() : memory.notEntailing()).add(module);
         if (entailed) {
             lastEntailing = module;
@@ -116,7 +116,7 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
      * reasoner that has not classified first.)
      */
     private boolean askHermiT(Set<OWLAxiom> module) {
-        OWLAxiom fact = reasoner.getEntailment();
+        OWLAxiom fact = library.getEntailment();
         OWLOntology ontology;
         try {
             ontology = manager.createOntology(module);
@@ -137,7 +137,7 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
         } finally {
             manager.removeOntology(ontology);
         }
-        return reasoner.isEntailed(module);
+        return library.isEntailed(module);
     }
 
     /** A subset of {@code axioms} that entails the fact (the module, or a smaller set known to), if they do. */
@@ -170,7 +170,7 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
 
     @Override
     public OWLAxiom getEntailment() {
-        return reasoner.getEntailment();
+        return library.getEntailment();
     }
 
     @Override
@@ -180,21 +180,21 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
 
     @Override
     public Set<OWLEntity> getSeedSignature() {
-        return reasoner.getSeedSignature();
+        return library.getSeedSignature();
     }
 
     @Override
     public Set<OWLAxiom> getModule(Set<OWLAxiom> axioms) {
-        return reasoner.getModule(axioms);
+        return library.getModule(axioms);
     }
 
     @Override
     public String getModularisationTypeDescription() {
-        return reasoner.getModularisationTypeDescription();
+        return library.getModularisationTypeDescription();
     }
 
     @Override
     public boolean isUseModularisation() {
-        return reasoner.isUseModularisation();
+        return library.isUseModularisation();
     }
 }
