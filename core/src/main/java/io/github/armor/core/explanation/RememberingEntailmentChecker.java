@@ -3,6 +3,7 @@ package io.github.armor.core.explanation;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -51,8 +52,6 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
     private final Set<OWLEntity> signature;
     private final Memory memory;
     private final OWLReasonerFactory reasoners;
-    private Set<OWLAxiom> lastAxioms = Set.of();
-    private Set<OWLAxiom> lastEntailing = Set.of();
     private int reasonerCalls;
 
     /** What the reasoner answered about one fact: the sets (modules) that entail it and those that do not. */
@@ -82,16 +81,12 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
 
     @Override
     public boolean isEntailed(Set<OWLAxiom> axioms) {
-        lastAxioms = Set.copyOf(axioms);
-        lastEntailing = Set.of();
         if (axioms.contains(library.getEntailment())) {
-            lastEntailing = Set.of(library.getEntailment());
             return true;
         }
         Set<OWLAxiom> module = module(axioms);
         for (Set<OWLAxiom> known : memory.entailing()) {
             if (module.containsAll(known)) {
-                lastEntailing = known;
                 return true;
             }
         }
@@ -103,9 +98,6 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
         reasonerCalls++;
         boolean entailed = reasoners instanceof ReasonerFactory ? askHermiT(module) : library.isEntailed(module);
         (entailed ? memory.entailing() : memory.notEntailing()).add(module);
-        if (entailed) {
-            lastEntailing = module;
-        }
         return entailed;
     }
 
@@ -140,21 +132,27 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
         return library.isEntailed(module);
     }
 
-    /** A subset of {@code axioms} that entails the fact (the module, or a smaller set known to), if they do. */
+    /**
+     * The library's answer (the whole set checked, as it builds its ontology): the search's next
+     * steps start from it, so which justification is found first stays the library's (a module
+     * here changed it to a larger one on robotics.owl). It checks again only for a set it did not
+     * check last: once per justification searched.
+     */
     @Override
     public Set<OWLAxiom> getEntailingAxioms(Set<OWLAxiom> axioms) {
-        if (!lastAxioms.equals(axioms)) {
-            isEntailed(axioms);
-        }
-        return lastEntailing;
+        return library.getEntailingAxioms(axioms);
     }
 
     private Set<OWLAxiom> module(Set<OWLAxiom> axioms) {
         if (axioms.isEmpty()) {
             return Set.of();
         }
-        return new SyntacticLocalityModuleExtractor(manager, axioms.stream(), ModuleType.STAR).extract(signature)
-                .stream().filter(OWLAxiom::isLogicalAxiom).collect(Collectors.toUnmodifiableSet());
+        Set<OWLAxiom> module = new SyntacticLocalityModuleExtractor(manager, axioms.stream(), ModuleType.STAR)
+                .extract(signature);
+        // In the order the library gave the axioms: its search, and so the justification it finds
+        // first, depends on the order, which must not change from one run to the next.
+        return axioms.stream().filter(a -> a.isLogicalAxiom() && module.contains(a))
+                .collect(Collectors.toCollection(LinkedHashSet::new));
     }
 
     /** How many checks went to the reasoner. */
