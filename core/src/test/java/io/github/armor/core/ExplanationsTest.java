@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.answers.Syntax;
 import java.nio.file.Path;
@@ -75,9 +76,13 @@ class ExplanationsTest {
         return file;
     }
 
-    private static OWLOntology robotics() throws Exception {
+    private static OWLOntology robotics() {
         OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
-        return manager.loadOntologyFromOntologyDocument(CoreFixture.ONTOLOGIES.resolve("robotics.owl").toFile());
+        try {
+            return manager.loadOntologyFromOntologyDocument(CoreFixture.ONTOLOGIES.resolve("robotics.owl").toFile());
+        } catch (org.semanticweb.owlapi.model.OWLOntologyCreationException e) {
+            throw new AssertionError(e);
+        }
     }
 
     /** Inferred (not asserted) class assertions and object property values HermiT finds, in a stable order. */
@@ -203,14 +208,51 @@ class ExplanationsTest {
         List<String> lines = fixture.ok("map", "EXPLAIN IND CLASS", "robot1", "Agent", "5").queriedObjects();
         Set<String> numbers = lines.stream().map(l -> l.split(" ")[0]).collect(Collectors.toSet());
         assertTrue(numbers.containsAll(Set.of("1", "2")), lines::toString);
-        OWLOntology ontology;
-        try {
-            ontology = robotics();
-        } catch (Exception e) {
-            throw new AssertionError(e);
-        }
+        OWLOntology ontology = robotics();
         OWLDataFactory f = ontology.getOWLOntologyManager().getOWLDataFactory();
         checkJustifications(ontology, f.getOWLClassAssertionAxiom(cls(f, "Agent"), ind(f, "robot1")), lines);
+    }
+
+    @Test
+    void pastTheTimeLimitWhatWasFoundIsAnsweredMarkedPartial() {
+        long limitMs = 4_000;
+        CoreFixture fixture = new CoreFixture(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES, dir),
+                false, 30_000, limitMs, 0, CoreConfig.Durability.NONE));
+        fixture.ok("map", "LOAD FILE", CoreFixture.ONTOLOGIES.resolve("robotics.owl").toString(),
+                "http://www.example.org/robotics", "false", StallingChecksReasonerFactory.class.getName(), "false");
+        OWLDataFactory f = OWLManager.getOWLDataFactory();
+        OWLAxiom fact = f.getOWLClassAssertionAxiom(cls(f, "Agent"), ind(f, "robot1"));
+        try {
+            // How many checks the first of robot1's justifications takes (the second run: the
+            // reference's own reasoner is made by then).
+            fixture.ok("map", "EXPLAIN IND CLASS", "robot1", "Agent", "1");
+            StallingChecksReasonerFactory.reset(Integer.MAX_VALUE);
+            fixture.ok("map", "EXPLAIN IND CLASS", "robot1", "Agent", "1");
+            int firstChecks = StallingChecksReasonerFactory.MADE.get();
+            assertTrue(firstChecks > 0, "no entailment check made a reasoner");
+
+            // robot1 has three justifications: the search for the others stalls past the limit.
+            StallingChecksReasonerFactory.reset(firstChecks);
+            Response partial = fixture.run("map", "EXPLAIN IND CLASS", "robot1", "Agent", "3");
+            assertEquals(211, partial.exitCode(), partial::errorDescription);
+            assertTrue(partial.timeout());
+            assertFalse(partial.success());
+            assertTrue(partial.errorDescription().startsWith("partial: 1 justification(s)"), partial.errorDescription());
+            List<String> lines = partial.queriedObjects();
+            assertTrue(lines.stream().allMatch(l -> l.startsWith("1 ")), lines::toString);
+            checkJustifications(robotics(), fact, lines);
+
+            // Stalled from the first check: partial with nothing found, never a set not checked.
+            StallingChecksReasonerFactory.reset(0);
+            Response nothing = fixture.run("map", "EXPLAIN IND CLASS", "robot1", "Agent", "3");
+            assertEquals(211, nothing.exitCode(), nothing::errorDescription);
+            assertTrue(nothing.timeout());
+            assertEquals(List.of(), nothing.queriedObjects());
+            assertTrue(nothing.errorDescription().startsWith("partial: 0 justification(s)"),
+                    nothing.errorDescription());
+        } finally {
+            StallingChecksReasonerFactory.reset(Integer.MAX_VALUE);
+        }
     }
 
     /** Each justification of the answer: its lines are axioms of the ontology, it entails the fact, it is minimal. */

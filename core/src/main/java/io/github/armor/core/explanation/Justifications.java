@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Supplier;
 import java.util.stream.Collectors;
 import org.semanticweb.owl.explanation.api.Explanation;
 import org.semanticweb.owl.explanation.api.ExplanationException;
@@ -21,21 +22,24 @@ import org.semanticweb.owl.explanation.api.ExplanationGeneratorFactory;
 import org.semanticweb.owl.explanation.api.ExplanationGeneratorInterruptedException;
 import org.semanticweb.owl.explanation.api.NotEntailedException;
 import org.semanticweb.owl.explanation.api.ExplanationProgressMonitor;
+import org.semanticweb.HermiT.ReasonerFactory;
 import org.semanticweb.owl.explanation.impl.blackbox.Configuration;
 import org.semanticweb.owl.explanation.impl.blackbox.DivideAndConquerContractionStrategy;
+import org.semanticweb.owl.explanation.impl.blackbox.EntailmentCheckerFactory;
 import org.semanticweb.owl.explanation.impl.blackbox.InitialEntailmentCheckStrategy;
 import org.semanticweb.owl.explanation.impl.blackbox.StructuralTypePriorityExpansionStrategy;
 import org.semanticweb.owl.explanation.impl.blackbox.checker.BlackBoxExplanationGeneratorFactory;
 import org.semanticweb.owl.explanation.impl.blackbox.checker.InconsistentOntologyExplanationGeneratorFactory;
-import org.semanticweb.owl.explanation.impl.blackbox.checker.SatisfiabilityEntailmentCheckerFactory;
 import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.model.AxiomType;
 import org.semanticweb.owlapi.model.OWLAxiom;
+import org.semanticweb.owlapi.model.OWLDataFactory;
 import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLIndividual;
 import org.semanticweb.owlapi.model.OWLIndividualAxiom;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.OWLPrimitive;
 import org.semanticweb.owlapi.model.parameters.Imports;
 import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
@@ -85,25 +89,27 @@ final class Justifications {
     static Found of(OWLOntology ontology, OWLAxiom fact, Set<OWLNamedIndividual> individuals, int limit,
                     String reasonerName, long deadlineNanos) {
         String reasoner = explainingReasoner(reasonerName);
-        OWLReasonerFactory factory = ReasonerRegistry.factory(reasoner);
-        Set<OWLAxiom> all = logicalAxioms(ontology);
+        Search search = new Search(ReasonerRegistry.factory(reasoner), limit, deadlineNanos, reasoner,
+                ontology.getLogicalAxiomCount(Imports.INCLUDED));
+        Set<OWLAxiom> schema = schemaAxioms(ontology);
         // Near the fact first: most facts follow from the assertions of their individuals and of
         // their neighbours; a robot's map is one connected ABox, whose module is nearly all of it.
         Found found = null;
         int searched = -1;
         for (int radius : individuals.isEmpty() ? new int[] {UNBOUNDED} : RADII) {
-            Set<OWLAxiom> module = module(ontology, fact, individuals, all, radius);
+            Set<OWLAxiom> module = module(search.manager, fact, schema,
+                    connectedAssertions(ontology, individuals, radius));
             if (module.size() == searched) {
                 continue; // the part did not grow: nothing new to search
             }
             searched = module.size();
-            found = search(fact, module, limit, factory, deadlineNanos, all.size(), reasoner, false);
+            found = search.run(fact, module, false);
             if (!found.sets().isEmpty() || found.partial()) {
                 return found;
             }
         }
-        if (searched < all.size()) {
-            found = search(fact, all, limit, factory, deadlineNanos, all.size(), reasoner, false);
+        if (searched < search.ontologySize) {
+            found = search.run(fact, logicalAxioms(ontology), false);
         }
         return found;
     }
@@ -112,11 +118,10 @@ final class Justifications {
     static Found ofInconsistency(OWLOntology ontology, int limit, String reasonerName, long deadlineNanos) {
         String reasoner = explainingReasoner(reasonerName);
         Set<OWLAxiom> all = logicalAxioms(ontology);
-        OWLAxiom contradiction = ontology.getOWLOntologyManager().getOWLDataFactory().getOWLSubClassOfAxiom(
-                ontology.getOWLOntologyManager().getOWLDataFactory().getOWLThing(),
-                ontology.getOWLOntologyManager().getOWLDataFactory().getOWLNothing());
-        return search(contradiction, all, limit, ReasonerRegistry.factory(reasoner), deadlineNanos, all.size(),
-                reasoner, true);
+        OWLDataFactory factory = ontology.getOWLOntologyManager().getOWLDataFactory();
+        OWLAxiom contradiction = factory.getOWLSubClassOfAxiom(factory.getOWLThing(), factory.getOWLNothing());
+        return new Search(ReasonerRegistry.factory(reasoner), limit, deadlineNanos, reasoner, all.size())
+                .run(contradiction, all, true);
     }
 
     private static Set<OWLAxiom> logicalAxioms(OWLOntology ontology) {
@@ -125,21 +130,29 @@ final class Justifications {
     }
 
     /**
-     * The part of the ontology searched first: the schema and the assertions of the fact's
-     * individuals' connected part of the ABox, then the STAR module of the fact's signature in it.
+     * The logical axioms that are not assertions (classes, properties, rules), read through the
+     * ontology's index of each axiom type: a scan of every axiom cost more than the search itself
+     * on a large ABox.
      */
-    static Set<OWLAxiom> module(OWLOntology ontology, OWLAxiom fact, Set<OWLNamedIndividual> individuals,
-                                Set<OWLAxiom> all, int radius) {
-        Set<OWLAxiom> candidates = new LinkedHashSet<>();
-        for (OWLAxiom axiom : all) {
-            if (!axiom.isOfType(AxiomType.ABoxAxiomTypes)) {
-                candidates.add(axiom);
-            }
-        }
-        candidates.addAll(connectedAssertions(ontology, individuals, radius));
+    private static Set<OWLAxiom> schemaAxioms(OWLOntology ontology) {
+        Set<OWLAxiom> schema = new LinkedHashSet<>();
+        AxiomType.AXIOM_TYPES.stream().filter(type -> type.isLogical() && !AxiomType.ABoxAxiomTypes.contains(type))
+                .forEach(type -> ontology.axioms(type, Imports.INCLUDED)
+                        .forEach(axiom -> schema.add(axiom.getAxiomWithoutAnnotations())));
+        return schema;
+    }
+
+    /**
+     * The part of the ontology searched first: the schema and some assertions, cut down to the
+     * STAR module of the fact's signature in them.
+     */
+    private static Set<OWLAxiom> module(OWLOntologyManager manager, OWLAxiom fact, Set<OWLAxiom> schema,
+                                        Set<OWLAxiom> assertions) {
+        Set<OWLAxiom> candidates = new LinkedHashSet<>(schema);
+        candidates.addAll(assertions);
         Set<OWLEntity> signature = fact.signature().collect(Collectors.toSet());
-        SyntacticLocalityModuleExtractor extractor = new SyntacticLocalityModuleExtractor(
-                OWLManager.createOWLOntologyManager(), candidates.stream(), ModuleType.STAR);
+        SyntacticLocalityModuleExtractor extractor = new SyntacticLocalityModuleExtractor(manager,
+                candidates.stream(), ModuleType.STAR);
         return extractor.extract(signature).stream().filter(OWLAxiom::isLogicalAxiom)
                 .collect(Collectors.toCollection(LinkedHashSet::new));
     }
@@ -176,63 +189,87 @@ final class Justifications {
         return assertions;
     }
 
-    private static Found search(OWLAxiom fact, Set<OWLAxiom> axioms, int limit, OWLReasonerFactory factory,
-                                long deadlineNanos, int ontologySize, String reasoner, boolean inconsistency) {
-        List<Explanation<OWLAxiom>> found = new CopyOnWriteArrayList<>();
-        ExplanationProgressMonitor<OWLAxiom> monitor = new ExplanationProgressMonitor<>() {
-            @Override
-            public void foundExplanation(ExplanationGenerator<OWLAxiom> generator, Explanation<OWLAxiom> explanation,
-                                         Set<Explanation<OWLAxiom>> all) {
-                found.add(explanation);
-            }
+    /**
+     * One EXPLAIN's searches: they share the deadline and one ontology manager, which the
+     * library would otherwise make anew for every entailment check and module.
+     */
+    private static final class Search {
+        final OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
+        final int ontologySize;
+        private final OWLReasonerFactory factory;
+        private final int limit;
+        private final long deadlineNanos;
+        private final String reasoner;
 
-            @Override
-            public boolean isCancelled() {
-                return System.nanoTime() > deadlineNanos || Thread.currentThread().isInterrupted();
-            }
-        };
-        long leftMs = Math.max(1, (deadlineNanos - System.nanoTime()) / 1_000_000);
-        ExplanationGeneratorFactory<OWLAxiom> generators = inconsistency
-                ? new InconsistentOntologyExplanationGeneratorFactory(factory,
-                OWLManager.getOWLDataFactory(), OWLManager::createOWLOntologyManager, leftMs)
-                : new BlackBoxExplanationGeneratorFactory<>(new Configuration<>(
-                new SatisfiabilityEntailmentCheckerFactory(factory, OWLManager::createOWLOntologyManager),
-                // PERFORM: a part of the ontology that does not entail the fact answers none (and the
-                // whole is searched) instead of a wrong set. The library's shorter constructors leave
-                // this strategy unset (owlexplanation 5.0.0).
-                new StructuralTypePriorityExpansionStrategy<>(InitialEntailmentCheckStrategy.PERFORM,
-                        OWLManager::createOWLOntologyManager),
-                new DivideAndConquerContractionStrategy<>(), monitor, OWLManager::createOWLOntologyManager));
-        boolean partial = false;
-        Set<Explanation<OWLAxiom>> complete = Set.of();
-        try {
-            complete = ReasonerCalls.run(null, deadlineNanos, () -> {
-                try {
-                    return generators.createExplanationGenerator(axioms, monitor).getExplanations(fact, limit);
-                } catch (ExplanationGeneratorInterruptedException e) {
-                    throw new SearchStopped(e);
-                } catch (NotEntailedException e) {
-                    return Set.<Explanation<OWLAxiom>>of();
-                } catch (ExplanationException e) {
-                    throw new IllegalStateException("the explanation library failed: " + e.getMessage(), e);
+        Search(OWLReasonerFactory factory, int limit, long deadlineNanos, String reasoner, int ontologySize) {
+            this.factory = factory;
+            this.limit = limit;
+            this.deadlineNanos = deadlineNanos;
+            this.reasoner = reasoner;
+            this.ontologySize = ontologySize;
+        }
+
+        Found run(OWLAxiom fact, Set<OWLAxiom> axioms, boolean inconsistency) {
+            List<Explanation<OWLAxiom>> found = new CopyOnWriteArrayList<>();
+            ExplanationProgressMonitor<OWLAxiom> monitor = new ExplanationProgressMonitor<>() {
+                @Override
+                public void foundExplanation(ExplanationGenerator<OWLAxiom> generator,
+                                             Explanation<OWLAxiom> explanation, Set<Explanation<OWLAxiom>> all) {
+                    found.add(explanation);
                 }
-            });
-        } catch (ReasonerCalls.Overran | SearchStopped e) {
-            partial = true;
-        }
-        if (!partial && monitor.isCancelled()) {
-            partial = complete.size() < limit;
-        }
-        Set<Set<OWLAxiom>> sets = new LinkedHashSet<>();
-        for (Explanation<OWLAxiom> explanation : partial ? found : complete) {
-            if (!explanation.isEmpty() && sets.size() < limit) {
-                sets.add(Set.copyOf(explanation.getAxioms()));
+
+                @Override
+                public boolean isCancelled() {
+                    return System.nanoTime() > deadlineNanos || Thread.currentThread().isInterrupted();
+                }
+            };
+            Supplier<OWLOntologyManager> managers = () -> manager;
+            long leftMs = Math.max(1, (deadlineNanos - System.nanoTime()) / 1_000_000);
+            ExplanationGeneratorFactory<OWLAxiom> generators;
+            if (inconsistency) {
+                generators = new InconsistentOntologyExplanationGeneratorFactory(factory,
+                        manager.getOWLDataFactory(), managers, leftMs);
+            } else {
+                EntailmentCheckerFactory<OWLAxiom> checks = RememberingEntailmentChecker.factory(
+                        factory.getClass() == ReasonerFactory.class ? new UntimedHermiT() : factory, manager);
+                // PERFORM: a part of the ontology that does not entail the fact answers none (and
+                // the whole is searched) instead of a wrong set. The library's shorter
+                // constructors leave this strategy unset (owlexplanation 5.0.0).
+                generators = new BlackBoxExplanationGeneratorFactory<>(new Configuration<>(checks,
+                        new StructuralTypePriorityExpansionStrategy<>(InitialEntailmentCheckStrategy.PERFORM, managers),
+                        new DivideAndConquerContractionStrategy<>(), monitor, managers));
             }
+            boolean partial = false;
+            Set<Explanation<OWLAxiom>> complete = Set.of();
+            try {
+                complete = ReasonerCalls.run(null, deadlineNanos, () -> {
+                    try {
+                        return generators.createExplanationGenerator(axioms, monitor).getExplanations(fact, limit);
+                    } catch (ExplanationGeneratorInterruptedException e) {
+                        throw new SearchStopped(e);
+                    } catch (NotEntailedException e) {
+                        return Set.<Explanation<OWLAxiom>>of();
+                    } catch (ExplanationException e) {
+                        throw new IllegalStateException("the explanation library failed: " + e.getMessage(), e);
+                    }
+                });
+            } catch (ReasonerCalls.Overran | SearchStopped e) {
+                partial = true;
+            }
+            if (!partial && monitor.isCancelled()) {
+                partial = complete.size() < limit;
+            }
+            Set<Set<OWLAxiom>> sets = new LinkedHashSet<>();
+            for (Explanation<OWLAxiom> explanation : partial ? found : complete) {
+                if (!explanation.isEmpty() && sets.size() < limit) {
+                    sets.add(Set.copyOf(explanation.getAxioms()));
+                }
+            }
+            List<Set<OWLAxiom>> ordered = new ArrayList<>(sets);
+            ordered.sort(Comparator.<Set<OWLAxiom>>comparingInt(Set::size).thenComparing(s -> s.stream()
+                    .map(Object::toString).sorted().collect(Collectors.joining("\n"))));
+            return new Found(ordered, partial, axioms.size(), ontologySize, reasoner);
         }
-        List<Set<OWLAxiom>> ordered = new ArrayList<>(sets);
-        ordered.sort(Comparator.<Set<OWLAxiom>>comparingInt(Set::size).thenComparing(s -> s.stream()
-                .map(Object::toString).sorted().collect(Collectors.joining("\n"))));
-        return new Found(ordered, partial, axioms.size(), ontologySize, reasoner);
     }
 
     /** The explanation library gave up (interrupted at the deadline): what was found so far stands. */
