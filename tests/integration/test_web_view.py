@@ -524,6 +524,9 @@ def test_the_readme_screenshot_shows_the_page_it_claims(tmp_path, browser):
         expect(page.locator('#graph-note')).to_contain_text('5 individuals, 8 links',
                                                             timeout=SHOWN_WITHIN_MS)
         page.wait_for_function('() => window.armorWeb.settled()')
+        # The page's own reads are not a directive: the card shows its counts, not "busy".
+        expect(page.locator('.card[data-name="robotics"] .badge.busy')).to_have_count(
+            0, timeout=SHOWN_WITHIN_MS)
         page.locator('#graph-canvas').hover(position={'x': 1, 'y': 1})  # no hover effect
         fresh = page.screenshot()
         ARTIFACTS.mkdir(parents=True, exist_ok=True)
@@ -534,7 +537,12 @@ def test_the_readme_screenshot_shows_the_page_it_claims(tmp_path, browser):
             boxes[name] = {'x': round(box['x']), 'y': round(box['y']),
                            'width': round(box['width']), 'height': round(box['height'])}
         boxes['summary']['height'] = 20  # its first line: the second holds the reasoning time
-        boxes['card']['height'] -= 22  # without the row of the reasoning time
+        # The card down to its profile: the rows below show times (classification, reasoning).
+        profile_bottom = page.evaluate(
+            "() => [...document.querySelectorAll('.card[data-name=\"robotics\"] dt')]"
+            ".find((dt) => dt.textContent === 'profile').nextElementSibling"
+            ".getBoundingClientRect().bottom")
+        boxes['card']['height'] = round(profile_bottom) - boxes['card']['y']
         canvas = {k: round(v) for k, v in page.locator('#graph-canvas').bounding_box().items()}
         canvas['height'] = 800 - canvas['y']
         palette = page.evaluate(

@@ -65,6 +65,7 @@ public final class Reference {
     private final ReasonerCoverage coverage;
 
     private final ReentrantLock lock = new ReentrantLock(true);
+    private volatile boolean viewInside;
     // The reasoner's kept types as readers that do not wait see them: offered when a writer lets go.
     private final PublishedStates published = new PublishedStates();
 
@@ -155,6 +156,24 @@ public final class Reference {
     }
 
     /**
+     * {@link #locked} for a read-only view of the web page: while a view holds this reference,
+     * {@link #heldByDirective} stays false, so a page does not report its own read as a directive.
+     */
+    public <T> T lockedForView(long waitMs, Function<Reference, T> work) {
+        return locked(waitMs, r -> {
+            boolean outermost = !viewInside;
+            viewInside = true;
+            try {
+                return work.apply(r);
+            } finally {
+                if (outermost) {
+                    viewInside = false;
+                }
+            }
+        });
+    }
+
+    /**
      * Takes this reference for the calling thread (re-entrant), waiting at most {@code waitMs};
      * an atomic list holds every reference it touches this way until it ends.
      *
@@ -189,6 +208,11 @@ public final class Reference {
     /** Whether another thread holds this reference (a writer reasoning, or a directive under way). */
     public boolean isBusy() {
         return lock.isLocked() && !lock.isHeldByCurrentThread();
+    }
+
+    /** Whether a directive (not a view of the web page) holds this reference: what a page shows as busy. */
+    public boolean heldByDirective() {
+        return isBusy() && !viewInside;
     }
 
     /**

@@ -83,11 +83,11 @@ final class Overview {
         if (reads.offLock(reference).isPresent()) {
             // Counted without the reference's lock: its ontology may be read while a writer changes it.
             counts(reference, summary);
-            summary.addProperty("busy", reference.isBusy());
+            summary.addProperty("busy", reference.heldByDirective());
             return summary;
         }
         try {
-            reference.locked(waitMs, r -> {
+            reference.lockedForView(waitMs, r -> {
                 counts(r, summary);
                 return null;
             });

@@ -75,7 +75,7 @@ final class ViewReads {
 
     /** Runs {@code work} holding the reference, as one directive would. */
     <T> T whole(Reference reference, Function<Reference, T> work) {
-        return reference.locked(lockWaitMs, r -> {
+        return reference.lockedForView(lockWaitMs, r -> {
             checkStillLoaded(r);
             return work.apply(r);
         });
@@ -101,7 +101,7 @@ final class ViewReads {
     void inSlices(Reference reference, BooleanSupplier step) {
         boolean more = true;
         while (more) {
-            more = reference.locked(lockWaitMs, r -> {
+            more = reference.lockedForView(lockWaitMs, r -> {
                 checkStillLoaded(r);
                 long deadline = System.nanoTime() + SLICE_NANOS;
                 boolean left;
