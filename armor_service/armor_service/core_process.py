@@ -217,7 +217,8 @@ class CoreProcess:
             process.stdin.close()
             try:
                 process.wait(timeout=5)
-            except subprocess.TimeoutExpired:
+            except (subprocess.TimeoutExpired, OSError):
+                # OSError: the timed wait sleeps, which fails under a faked clock (libfaketime).
                 process.kill()
                 process.wait()
         shutil.rmtree(self._socket_dir, ignore_errors=True)
