@@ -14,6 +14,7 @@
 """
 
 import dataclasses
+import os
 import pathlib
 import re
 import subprocess
@@ -73,7 +74,10 @@ def solve(domain: Text, problem_text: str, search: str = 'astar', heuristic: str
         run = subprocess.run(
             [sys.executable, '-m', 'pyperplan', '-l', 'info', '-s', search, '-H', heuristic,
              str(pathlib.Path(domain).resolve()), str(problem)],
-            capture_output=True, text=True, timeout=timeout_s)
+            capture_output=True, text=True, timeout=timeout_s,
+            # pyperplan breaks ties between equally short plans by set order, which Python's
+            # per-process string hashing shuffles: a fixed seed gives one plan per problem.
+            env={**os.environ, 'PYTHONHASHSEED': '0'})
         wall_s = time.monotonic() - started
         solution = problem.with_name(problem.name + '.soln')
         if not solution.exists():
