@@ -51,8 +51,9 @@ step lint       test   "venv"           "flake8, pydocstyle, mypy (tools/require
 step planner    test   "venv"           "pyperplan (tools/requirements-planning.txt), for PDDL plans"
 step browser    test   "venv"           "Playwright and Debian's chromium, for the web view's tests"
 step cpp        test   "armor_msgs"     "the C++ client armor_cpp into install/armor_cpp"
+step testrunner test   "venv"           "pytest-xdist (tools/requirements-test-runner.txt), test files side by side"
 step colcon     test   "venv"           "colcon (tools/requirements-colcon.txt), for the colcon workspace test"
-step faketime   test   ""               "Debian's libfaketime, for the clock-jump test of the durability suite"
+step faketime   test   ""               "Debian's libfaketime, for the clock-jump test (test_clock_jumps.py)"
 
 # ---------------------------------------------------------------- helpers
 # hash_of FILE...   : sha256 over names and contents of the existing files given (sorted).
@@ -214,8 +215,9 @@ pip_requirements() {
 step_lint() { pip_requirements tools/requirements-lint.txt; }
 step_planner() { pip_requirements tools/requirements-planning.txt; }
 step_colcon() { pip_requirements tools/requirements-colcon.txt; }
+step_testrunner() { pip_requirements tools/requirements-test-runner.txt; }
 
-# The clock-jump test (tests/integration/test_durability.py) moves the wall clock of a running
+# The clock-jump test (tests/integration/test_clock_jumps.py) moves the wall clock of a running
 # node and core with libfaketime.
 FAKETIME_LIB=/usr/lib/x86_64-linux-gnu/faketime/libfaketime.so.1
 step_faketime() {

@@ -38,5 +38,14 @@ if skipped:
 print(f'C++ client: {len(cases)} GoogleTest cases passed, none skipped')
 PY
 
-echo "== node, client and CLI: pytest over ROS 2"
-python -m pytest -p no:cacheprovider "$@"
+# Test files run side by side, ARMOR_TEST_WORKERS at a time (3 by default: most of a file's time
+# is spent waiting for ROS discovery, restarts and reasoners, so 3 keep 2 cores busy). Each
+# worker reserves its own DDS domain and starts its own nodes; a file stays on one worker, so
+# its module fixtures start once. ARMOR_TEST_WORKERS=0 runs them one after the other.
+workers="${ARMOR_TEST_WORKERS:-3}"
+echo "== node, client and CLI: pytest over ROS 2 ($workers files at a time)"
+if [ "$workers" = 0 ]; then
+  python -m pytest -p no:cacheprovider "$@"
+else
+  python -m pytest -p no:cacheprovider --numprocesses "$workers" --dist loadfile "$@"
+fi

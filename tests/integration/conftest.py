@@ -6,6 +6,7 @@ import os
 import pathlib
 import random
 import threading
+import time
 
 import pytest
 
@@ -13,6 +14,7 @@ REPO = pathlib.Path(__file__).resolve().parents[2]
 ONTOLOGIES = REPO / 'ontologies'
 TEST_ONTOLOGIES = REPO / 'tests' / 'ontologies'
 NS = 'http://www.example.org/robotics#'
+
 
 def domains_in_use() -> set:
     """DDS domains that have a participant on this machine, whoever started it.
@@ -77,6 +79,11 @@ if not _inherited or os.environ.get('ARMOR_TEST_DOMAIN') != _inherited:
     os.environ['ROS_DOMAIN_ID'] = os.environ['ARMOR_TEST_DOMAIN'] = reserve_domain()
 # armor call's relays started by tests end soon after the run (and at its end, below).
 os.environ['ARMOR_CALL_RELAY_IDLE_S'] = '60'
+
+
+def pytest_collection_modifyitems(items):
+    """Files marked runs_for_minutes first: workers take files in this order."""
+    items.sort(key=lambda item: item.get_closest_marker('runs_for_minutes') is None)
 
 
 @pytest.fixture(scope='session', autouse=True)
@@ -147,13 +154,35 @@ def armor(armor_node):
     transport.close()
 
 
+def call_words(transport, reference: str, words: str, *args, client: str = 'test',
+               timeout_s: float = 120.0):
+    """transport's answer to 'COMMAND PRIMARY SECONDARY' with args on a reference."""
+    from armor_client import directive
+    command, primary, secondary = (words.split() + ['', '', ''])[:3]
+    return transport.call(directive(client, reference, command, primary, secondary, list(args)),
+                          timeout_s=timeout_s)
+
+
+def first_call_after_start(transport, reference: str, words: str, *args,
+                           deadline_s: float = 300.0):
+    """A read sent to a node just started (again), asked again until answered.
+
+    A transport that knew the node's earlier run can send its first request before the new
+    server is matched, and that request is lost: an attempt waits 20 s, not the whole deadline,
+    and after it the transport proves the new node's response path before asking again.
+    """
+    deadline = time.monotonic() + deadline_s
+    while True:
+        try:
+            return call_words(transport, reference, words, *args, timeout_s=20.0)
+        except Exception:  # noqa: BLE001 - asked again until the deadline
+            if time.monotonic() > deadline:
+                raise
+
+
 @pytest.fixture
 def call(armor):
     """call('REF', 'COMMAND PRIMARY SECONDARY', *args) -> ArmorDirectiveRes."""
-    from armor_client import directive
-
     def send(reference, words, *args, client='test', timeout_s=120):
-        command, primary, secondary = (words.split() + ['', '', ''])[:3]
-        return armor.call(directive(client, reference, command, primary, secondary, args),
-                          timeout_s=timeout_s)
+        return call_words(armor, reference, words, *args, client=client, timeout_s=timeout_s)
     return send

@@ -16,6 +16,9 @@ import subprocess
 import sys
 
 from conftest import release_domain, reserve_domain
+import pytest
+
+pytestmark = pytest.mark.runs_for_minutes
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 SECTIONS = ('## Summary', '## Machine and versions', '## 1. Transport overhead',

@@ -12,6 +12,9 @@ import subprocess
 import sys
 
 from conftest import release_domain, reserve_domain
+import pytest
+
+pytestmark = pytest.mark.runs_for_minutes
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 

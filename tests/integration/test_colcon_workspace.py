@@ -21,6 +21,8 @@ import pytest
 
 from conftest import ONTOLOGIES
 
+pytestmark = pytest.mark.runs_for_minutes
+
 REPO = pathlib.Path(__file__).resolve().parents[2]
 BUILD_TIMEOUT_S = 3600  # an idle 2-core machine needs a few minutes; one shared by 8 builds took 25+
 

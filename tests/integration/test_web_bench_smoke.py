@@ -11,6 +11,9 @@ import subprocess
 import sys
 
 from conftest import release_domain, REPO, reserve_domain
+import pytest
+
+pytestmark = pytest.mark.runs_for_minutes
 
 
 def test_the_web_view_benchmark_runs_and_reports_every_figure(tmp_path):
