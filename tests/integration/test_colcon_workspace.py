@@ -52,6 +52,9 @@ def in_workspace(workspace, command):
     env = {'HOME': os.environ.get('HOME', '/root'), 'PATH': '/usr/local/bin:/usr/bin:/bin',
            'LANG': 'C.UTF-8', 'ROS_DOMAIN_ID': os.environ['ROS_DOMAIN_ID'],
            'ARMOR_CALL_RELAY_IDLE_S': '60',
+           # colcon's make otherwise adds -l<cores>, and under the suite's other workers the
+           # load stays above 2: the build would go one job at a time.
+           'MAKEFLAGS': f'-j{os.cpu_count()}',
            # Lines reach the log file as they are said, not when a buffer fills.
            'RCUTILS_LOGGING_BUFFERED_STREAM': '0', 'PYTHONUNBUFFERED': '1'}
     return {'args': ['bash', '-c', script], 'cwd': workspace, 'env': env}

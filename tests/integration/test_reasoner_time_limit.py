@@ -17,8 +17,6 @@ from armor_client import ArmorTransport, directive
 from conftest import start_node
 import pytest
 
-pytestmark = pytest.mark.runs_for_minutes
-
 NAMESPACE = '/time_limit'
 LIMIT_MS = 1_000
 MARGIN_MS = 1_000

@@ -34,6 +34,8 @@ import pytest
 from test_contract_support import answer, failure, succeeded, unique_name
 from test_contract_support import load  # noqa: F401 (fixture)
 
+pytestmark = pytest.mark.runs_for_minutes
+
 IMPORTS = TEST_ONTOLOGIES / 'imports'
 SECRET_IRI = 'http://www.example.org/armor-test/secret'
 SECRET_CLASS = f'<{SECRET_IRI}#TopSecret>'

@@ -20,6 +20,8 @@ from playwright.sync_api import expect, sync_playwright
 import pytest
 from web_browser import free_port, launch
 
+pytestmark = pytest.mark.runs_for_minutes
+
 ROBOTICS = str(ONTOLOGIES / 'robotics.owl')
 NAMESPACE = '/web_view'
 ARTIFACTS = REPO / 'build' / 'test-artifacts' / 'web'
