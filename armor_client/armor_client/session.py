@@ -13,8 +13,9 @@ import os
 from typing import Any, Awaitable, Callable, Generic, Optional, Sequence, Type, TypeVar
 
 from armor_client.errors import error_for
-from armor_client.operations import Parser, ReferenceBase, SessionCommands, Words
-from armor_client.transport import ArmorTransport
+from armor_client.operations import _catalogue, Parser, ReferenceBase, SessionCommands, Words
+from armor_client.plugin_faces import add_methods, PluginMethods
+from armor_client.transport import ArmorTransport, directive
 from rclpy.node import Node
 
 R = TypeVar('R', bound=ReferenceBase)
@@ -53,6 +54,11 @@ class SessionBase(SessionCommands, Generic[R]):
         self._owns_transport = transport is None
         self.transport = transport or ArmorTransport(node=node, namespace=namespace,
                                                      service_wait_s=service_wait_s)
+        # This session's own reference class: the methods of its node's plugins go there.
+        built_in = type(self)._reference_class
+        self._reference_class = type(built_in.__name__, (built_in,), {
+            '__module__': built_in.__module__, '__doc__': built_in.__doc__})
+        self._plugin_methods: Optional[PluginMethods] = None
 
     def reference(self, name: str, iris: Optional[bool] = None) -> R:
         """The object for a reference that is loaded (or will be); nothing is sent yet.
@@ -65,6 +71,32 @@ class SessionBase(SessionCommands, Generic[R]):
             A Reference (AsyncReference from AsyncArmor).
         """
         return self._reference_class(self, name, self.iris if iris is None else iris)
+
+    def learn_plugin_methods(self) -> Any:
+        """Ask the node for its catalogue and give this session's references its plugins' methods.
+
+        Done on its own the first time a reference is asked for a method it does not have;
+        call it again after the node restarted with other plugins.
+
+        Returns:
+            A PluginMethods (an awaitable of it from AsyncArmor): the methods added and the
+            faces refused because the client already has their method name.
+        """
+        return self._session('', ('GET', 'CATALOGUE', ''), [], self._add_plugin_methods)
+
+    def _plugin_method(self, name: str) -> bool:
+        """Whether the node's plugins give the references a method ``name`` (asked once)."""
+        if self._plugin_methods is None:
+            # Blocking in both clients: an attribute lookup cannot await (one round trip).
+            self._add_plugin_methods(_checked(self.transport.call(
+                directive(self.client_name, '', 'GET', 'CATALOGUE', ''), timeout_s=self.timeout_s)))
+        return name in self._plugin_methods.added  # type: ignore[union-attr]
+
+    def _add_plugin_methods(self, response: Any) -> PluginMethods:
+        answered = _catalogue(response).commands
+        self._plugin_methods = add_methods(self._reference_class, type(self)._reference_class,
+                                           answered, self._plugin_methods or PluginMethods())
+        return self._plugin_methods
 
     def call(self, reference: str, command: str, primary: str = '', secondary: str = '',
              args: Sequence[Any] = ()) -> Any:
