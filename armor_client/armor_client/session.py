@@ -88,8 +88,9 @@ class SessionBase(SessionCommands, Generic[R]):
         """Whether the node's plugins give the references a method ``name`` (asked once)."""
         if self._plugin_methods is None:
             # Blocking in both clients: an attribute lookup cannot await (one round trip).
-            self._add_plugin_methods(_checked(self.transport.call(
-                directive(self.client_name, '', 'GET', 'CATALOGUE', ''), timeout_s=self.timeout_s)))
+            request = directive(self.client_name, '', 'GET', 'CATALOGUE', '')
+            self._add_plugin_methods(_checked(self.transport.call(request,
+                                                                  timeout_s=self.timeout_s)))
         return name in self._plugin_methods.added  # type: ignore[union-attr]
 
     def _add_plugin_methods(self, response: Any) -> PluginMethods:
