@@ -42,16 +42,6 @@ record PluginStateSource(StateAnswer answer) implements AnswerSource {
         }
 
         @Override
-        public List<String> args() {
-            return context.args();
-        }
-
-        @Override
-        public String arg(int index) {
-            return context.arg(index);
-        }
-
-        @Override
         public <E extends OWLEntity> Optional<E> known(EntityType<E> type, String name) {
             return PublishedAnswers.named(reference, type, name, knows);
         }

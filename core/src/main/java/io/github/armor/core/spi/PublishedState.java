@@ -20,9 +20,13 @@ import org.semanticweb.owlapi.model.OWLNamedIndividual;
 public interface PublishedState {
     Directive directive();
 
-    List<String> args();
+    default List<String> args() {
+        return directive().args();
+    }
 
-    String arg(int index);
+    default String arg(int index) {
+        return args().get(index);
+    }
 
     /** The entity a client's name means, when the state knows it; empty otherwise (wait for the reference). */
     <E extends OWLEntity> Optional<E> known(EntityType<E> type, String name);

@@ -31,14 +31,14 @@ class PluginStateAnswersTest {
     private static final String KITCHEN = "<http://www.example.org/robotics#kitchen>";
 
     private final CountDownLatch writerInside = new CountDownLatch(1);
-    private final CountDownLatch letWriterGo = new CountDownLatch(1);
+    private final CompletableFuture<Void> letWriterGo = new CompletableFuture<>();
     private final CommandTable table = tableWithPlugin();
     private final ArmorCore core = new ArmorCore(new CoreConfig(true, "HERMIT", List.of(ONTOLOGIES), false,
             300, 0, 0, CoreConfig.Durability.NONE), table);
 
     @AfterEach
     void close() {
-        letWriterGo.countDown();
+        letWriterGo.complete(null);
         core.close();
     }
 
@@ -47,11 +47,7 @@ class PluginStateAnswersTest {
         CommandTable commands = CommandTable.standard();
         commands.command("TEST HOLD").summary("keeps the reference").manipulation(c -> {
             writerInside.countDown();
-            try {
-                letWriterGo.await(10, TimeUnit.SECONDS);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
+            letWriterGo.completeOnTimeout(null, 10, TimeUnit.SECONDS).join();
             return c.ok();
         });
         io.github.armor.core.spi.CommandTable plugin = new PluginTable(commands);
@@ -93,7 +89,7 @@ class PluginStateAnswersTest {
         // Without a source the plugin's other query waits for the reference, and gives up.
         assertEquals(211, run("QUERY ROOMS SENTENCES", "OccupiedRoom").exitCode());
         assertFalse(writer.isDone());
-        letWriterGo.countDown();
+        letWriterGo.complete(null);
         assertTrue(writer.get(10, TimeUnit.SECONDS).success());
         assertEquals("", run("QUERY ROOMS OCCUPIED").errorDescription(), "a free reference answers the ordinary way");
     }
