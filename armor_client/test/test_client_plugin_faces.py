@@ -17,7 +17,8 @@ import pytest
 
 def _command(key, kind, required, face, origin='shop.jar', variadic=False):
     return {'key': key, 'words': key.split(), 'aliases': [], 'kind': kind,
-            'changes_ontology': kind == 'manipulation', 'summary': f'does {key.lower().rstrip(" -")}',
+            'changes_ontology': kind == 'manipulation',
+            'summary': f'does {key.lower().rstrip(" -")}',
             'origin': origin, 'face': face,
             'args': {'required': required, 'optional': [], 'variadic': variadic}}
 
@@ -32,7 +33,8 @@ CATALOGUE = {'format': 1, 'exit_codes': [], 'settings': [], 'commands': [
              _face('stock', 'none', ('item', 'string'), ('count', 'int'))),
     _command('QUERY SHELVES -', 'query', ['class', 'class'],
              _face('shelves', 'entities', ('classes', 'string')), variadic=True),
-    _command('QUERY CLASH -', 'query', ['class'], _face('instances', 'entities', ('cls', 'string'))),
+    _command('QUERY CLASH -', 'query', ['class'],
+             _face('instances', 'entities', ('cls', 'string'))),
     _command('QUERY TWICE -', 'query', [], _face('stock', 'entities'), origin='other.jar'),
     _command('QUERY IND CLASS', 'query', ['class'], None, origin='core'),
 ]}
@@ -49,9 +51,10 @@ class FakeTransport:
         if (request.command, request.primary_command_spec) == ('GET', 'CATALOGUE'):
             response.queried_objects = [json.dumps(CATALOGUE)]
         else:
-            self.sent.append((request.reference_name, request.command, request.primary_command_spec,
-                              list(request.args)))
-            response.queried_objects = ['<http://example.org/shop#b>', '<http://example.org/shop#a>']
+            self.sent.append((request.reference_name, request.command,
+                              request.primary_command_spec, list(request.args)))
+            response.queried_objects = ['<http://example.org/shop#b>',
+                                        '<http://example.org/shop#a>']
         return response
 
     def close(self):
