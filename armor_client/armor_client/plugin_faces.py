@@ -45,13 +45,14 @@ class PluginMethods:
     refused: Dict[str, str] = field(default_factory=dict)
 
 
-def add_methods(reference_class: type, built_in: type, commands: Sequence[Command],
+def add_methods(classes: Dict[type, type], commands: Sequence[Command],
                 known: PluginMethods) -> PluginMethods:
-    """Add to ``reference_class`` a method for each plugin command of ``commands`` with a face.
+    """Add a method for each plugin command of ``commands`` with a face to a session's classes.
 
     Args:
-        reference_class: the session's own reference class (a subclass of ``built_in``).
-        built_in: the client's reference class, whose methods a plugin may not replace.
+        classes: the session's own reference class, then its batch class, each mapped to the
+            client's class it derives from (whose methods a plugin may not replace); a batch
+            gets the changes only.
         commands: the node's catalogue.
         known: what earlier calls added (kept: a method once added stays).
 
@@ -62,14 +63,19 @@ def add_methods(reference_class: type, built_in: type, commands: Sequence[Comman
         face = command.face
         if face is None or command.origin == 'core' or known.added.get(face.method) == command:
             continue
-        taken = _taken(built_in, face.method) or _added_by(known, face.method)
+        # Batches queue changes: a query's method is the references' only.
+        targets = list(classes.items()) if face.answer == 'none' else list(classes.items())[:1]
+        taken = next((why for why in (_taken(built_in, face.method) for _, built_in in targets)
+                      if why), '') or _added_by(known, face.method)
         if taken:
             reason = (f'{command.name} (plugin {command.origin}) gets no method {face.method}(): '
                       f'{taken}; send it with call()')
             known.refused[command.name] = reason
             warnings.warn(reason, RuntimeWarning, stacklevel=3)
             continue
-        setattr(reference_class, face.method, face_method(command))
+        method = face_method(command)
+        for session_class, _ in targets:
+            setattr(session_class, face.method, method)
         known.added[face.method] = command
     return known
 
@@ -108,7 +114,9 @@ def face_method(command: Command) -> Callable[..., Any]:
             given = bound.arguments.get(parameter.name, ())
             for value in (given if command.variadic else (given,)):
                 values.append(_argument(face.method, parameter, value))
-        return self._execute(command.words, values, reader(self.answers))
+        # A batch queues the directive and reads no answer (it has no ``answers``).
+        return self._execute(command.words, values,
+                             reader(self.answers) if face.answer != 'none' else Answers.nothing)
 
     method.__name__ = method.__qualname__ = face.method
     method.__signature__ = signature  # type: ignore[attr-defined]

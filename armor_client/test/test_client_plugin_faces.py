@@ -87,6 +87,16 @@ def test_a_plugin_face_is_a_method_reading_its_answer_as_a_built_in_face_does():
     assert len(transport.sent) == 2, 'a refused call sends nothing'
 
 
+def test_a_batch_queues_a_plugin_change_and_has_no_plugin_query():
+    transport = FakeTransport()
+    with pytest.warns(RuntimeWarning):
+        batch = Armor('t', transport=transport).reference('shop').batch()
+    assert batch.stock('pear', 2) is None
+    assert [(r.command, r.primary_command_spec, list(r.args)) for r in batch.requests] == [
+        ('ADD', 'STOCK', ['pear', '2'])]
+    assert not hasattr(batch, 'shelves') and transport.sent == []
+
+
 def test_only_the_session_that_learned_has_the_methods():
     learned = Armor('t', transport=FakeTransport())
     other = Armor('u', transport=FakeTransport())

@@ -169,6 +169,9 @@ def test_a_plugin_command_with_a_face_is_a_method_of_python_references(plugged):
         assert robotics.greeted() == ['kitchen']
         assert robotics.greeting_sentences() == ['hello kitchen']
         assert robotics.sleep_for(10) == ['slept']
+        with robotics.batch() as batch:  # a batch queues a plugin's change too
+            batch.greet('bedroom')
+        assert robotics.greeted() == ['bedroom', 'kitchen']
         assert str(inspect.signature(robotics.greet)) == '(individual: str) -> None'
         assert robotics.greet.__doc__.startswith(
             'Asserts that the individual was greeted (ADD GREETING; plugin hello.jar).')
@@ -186,20 +189,20 @@ def test_a_plugin_command_with_a_face_is_a_method_of_python_references(plugged):
             learned = client.learn_plugin_methods()
         assert {'greet', 'greeted', 'greeting_sentences', 'sleep_for'} <= set(learned.added)
         assert 'instances' not in learned.added and 'QUERY MARK CLASH' in learned.refused
-        assert robotics.instances('Greeted') == ['kitchen']
+        assert robotics.instances('Greeted') == ['bedroom', 'kitchen']
         # Another session has learned nothing: its references lack the methods until it asks.
         assert 'greet' not in vars(type(other.reference('robotics')))
 
     async def asynchronously():
         async with AsyncArmor('faces_aio', namespace='/plugged') as client:
             robotics = client.reference('robotics')
-            assert await robotics.greeted() == ['kitchen']
-            await robotics.greet('bedroom')
+            assert await robotics.greeted() == ['bedroom', 'kitchen']
+            await robotics.greet('corridor1')
             return await robotics.greeted()
 
     with pytest.warns(RuntimeWarning, match=CLASH):
-        assert asyncio.run(asynchronously()) == ['bedroom', 'kitchen']
-    for room in ('kitchen', 'bedroom'):
+        assert asyncio.run(asynchronously()) == ['bedroom', 'corridor1', 'kitchen']
+    for room in ('kitchen', 'bedroom', 'corridor1'):
         assert send(armor, 'robotics', 'REMOVE IND CLASS', room, 'Greeted').success
 
 
