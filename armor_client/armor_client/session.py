@@ -74,10 +74,11 @@ class SessionBase(SessionCommands, Generic[R]):
         return self._reference_class(self, name, self.iris if iris is None else iris)
 
     def learn_plugin_methods(self) -> Any:
-        """Ask the node for its catalogue and give this session's references its plugins' methods.
+        """Ask the node for its catalogue; give this session's references its plugins' methods.
 
-        Done on its own the first time a reference is asked for a method it does not have;
-        call it again after the node restarted with other plugins.
+        Done on its own the first time a reference is asked for a method it does not have, or
+        makes a batch (which gets the plugins' changes); call it again after the node
+        restarted with other plugins.
 
         Returns:
             A PluginMethods (an awaitable of it from AsyncArmor): the methods added and the
