@@ -73,7 +73,8 @@ class AsyncReference(ReferenceBase):
         Returns:
             An empty AsyncBatch on this reference.
         """
-        return AsyncBatch(self.armor, self.name)
+        batch: AsyncBatch = self.armor._batch_with_plugin_methods(self.armor, self.name)
+        return batch
 
     def subscribe(self, query: Query, *, iris: Optional[bool] = None) -> AsyncSubscription:
         """The changes of a query's answer as an async iterator; see Reference.subscribe.
@@ -199,3 +200,6 @@ class AsyncBatch(BatchBase):
     async def __aexit__(self, exc_type: Any, *exc: Any) -> None:
         if exc_type is None and self.requests:
             await self.send()
+
+
+AsyncArmor._batch_class = AsyncBatch

@@ -17,12 +17,12 @@ is written once for the sync and the asyncio client alike.
 
 import enum
 import json
-from typing import Any, Dict, List, Optional, Sequence, Union
+from typing import Any, Dict, List, Optional, Sequence, TYPE_CHECKING, Union
 
 from armor_client.answers import (  # noqa: F401 (the answer types, imported from here before)
     AcknowledgedChange, Answers, ChangeHistory, Consistency, Parser, SparqlRows, Words,
     _change_history, sparql_cell, sparql_rows)
-from armor_client.errors import error_for
+from armor_client.errors import ArmorError, error_for
 from armor_client.faces import ManipulationFaces, QueryFaces
 from armor_client.planning import PlannerBridge
 from armor_client.scenes import Scenes
@@ -528,6 +528,24 @@ class ReferenceBase(Manipulations, Queries, ReferenceCommands, PlannerBridge, Sc
 
     def __repr__(self) -> str:
         return f'{type(self).__name__}({self.name!r}, client={self.armor.client_name!r})'
+
+    if not TYPE_CHECKING:  # type checkers keep refusing names a reference lacks (typos)
+        def __getattr__(self, name: str) -> Any:
+            # Only names this class lacks reach here: maybe a method of the node's plugins
+            # (plugin_faces.py), learned from its catalogue on the first such name.
+            armor = self.__dict__.get('armor')
+            if name.startswith('_') or armor is None:
+                raise AttributeError(name)
+            try:
+                found = armor._plugin_method(name)
+            except ArmorError as e:
+                raise AttributeError(f'{type(self).__name__!r} object has no attribute '
+                                     f"{name!r}, and the node's catalogue, which may add one, "
+                                     f'could not be read: {e}') from e
+            if not found:
+                raise AttributeError(f'{type(self).__name__!r} object has no attribute '
+                                     f'{name!r}, nor does a plugin of the node give one')
+            return object.__getattribute__(self, name)
 
     def mounted_by(self) -> Any:
         """The client that holds this reference's mount (GET REF CLIENT).

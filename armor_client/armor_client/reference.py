@@ -65,8 +65,9 @@ class Reference(ReferenceBase):
         Returns:
             An empty Batch on this reference.
         """
-        return Batch(self.armor.transport, self.armor.client_name, self.name,
-                     self.armor.timeout_s)
+        batch: Batch = self.armor._batch_with_plugin_methods(
+            self.armor.transport, self.armor.client_name, self.name, self.armor.timeout_s)
+        return batch
 
     def subscribe(self, query: Query, callback: Callable[[AnswerChange], Any], *,
                   iris: Optional[bool] = None) -> Subscription:
@@ -105,6 +106,7 @@ class Armor(Blocking, SessionBase[Reference]):
     """
 
     _reference_class = Reference
+    _batch_class = Batch
 
     def call(self, reference: str, command: str, primary: str = '', secondary: str = '',
              args: Sequence[Any] = ()) -> ArmorDirectiveRes:

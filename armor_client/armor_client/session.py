@@ -12,9 +12,11 @@ two, so a method added once serves both clients.
 import os
 from typing import Any, Awaitable, Callable, Generic, Optional, Sequence, Type, TypeVar
 
-from armor_client.errors import error_for
-from armor_client.operations import Parser, ReferenceBase, SessionCommands, Words
-from armor_client.transport import ArmorTransport
+from armor_client.batch import BatchBase
+from armor_client.errors import ArmorError, error_for
+from armor_client.operations import _catalogue, Parser, ReferenceBase, SessionCommands, Words
+from armor_client.plugin_faces import add_methods, PluginMethods
+from armor_client.transport import ArmorTransport, directive
 from rclpy.node import Node
 
 R = TypeVar('R', bound=ReferenceBase)
@@ -42,6 +44,7 @@ class SessionBase(SessionCommands, Generic[R]):
     """A connection to one ARMOR node, speaking as one client (see Armor for the arguments)."""
 
     _reference_class: Type[R]
+    _batch_class: Type[BatchBase]
 
     def __init__(self, client_name: Optional[str] = None, *, namespace: str = '',
                  node: Optional[Node] = None, timeout_s: Optional[float] = 60.0,
@@ -53,6 +56,10 @@ class SessionBase(SessionCommands, Generic[R]):
         self._owns_transport = transport is None
         self.transport = transport or ArmorTransport(node=node, namespace=namespace,
                                                      service_wait_s=service_wait_s)
+        # This session's own reference and batch classes: its node's plugins' methods go there.
+        self._reference_class = _own(type(self)._reference_class)
+        self._batch_class = _own(type(self)._batch_class)
+        self._plugin_methods: Optional[PluginMethods] = None
 
     def reference(self, name: str, iris: Optional[bool] = None) -> R:
         """The object for a reference that is loaded (or will be); nothing is sent yet.
@@ -65,6 +72,44 @@ class SessionBase(SessionCommands, Generic[R]):
             A Reference (AsyncReference from AsyncArmor).
         """
         return self._reference_class(self, name, self.iris if iris is None else iris)
+
+    def learn_plugin_methods(self) -> Any:
+        """Ask the node for its catalogue; give this session's references its plugins' methods.
+
+        Done on its own the first time a reference is asked for a method it does not have, or
+        makes a batch (which gets the plugins' changes); call it again after the node
+        restarted with other plugins.
+
+        Returns:
+            A PluginMethods (an awaitable of it from AsyncArmor): the methods added and the
+            faces refused because the client already has their method name.
+        """
+        return self._session('', ('GET', 'CATALOGUE', ''), [], self._add_plugin_methods)
+
+    def _batch_with_plugin_methods(self, *args: Any) -> Any:
+        """A batch of this session, with the changes of its node's plugins (asked once)."""
+        try:
+            self._plugin_method('')
+        except ArmorError:
+            pass  # the node's catalogue cannot be read now: the built-in changes still queue
+        return self._batch_class(*args)
+
+    def _plugin_method(self, name: str) -> bool:
+        """Whether the node's plugins give the references a method ``name`` (asked once)."""
+        if self._plugin_methods is None:
+            # Blocking in both clients: an attribute lookup cannot await (one round trip).
+            request = directive(self.client_name, '', 'GET', 'CATALOGUE', '')
+            self._add_plugin_methods(_checked(self.transport.call(request,
+                                                                  timeout_s=self.timeout_s)))
+        return name in self._plugin_methods.added  # type: ignore[union-attr]
+
+    def _add_plugin_methods(self, response: Any) -> PluginMethods:
+        answered = _catalogue(response).commands
+        self._plugin_methods = add_methods(
+            {self._reference_class: type(self)._reference_class,
+             self._batch_class: type(self)._batch_class},
+            answered, self._plugin_methods or PluginMethods())
+        return self._plugin_methods
 
     def call(self, reference: str, command: str, primary: str = '', secondary: str = '',
              args: Sequence[Any] = ()) -> Any:
@@ -82,6 +127,12 @@ class SessionBase(SessionCommands, Generic[R]):
     def _session(self, reference: str, words: Words, args: Sequence[Any], parse: Parser) -> Any:
         return self._then(self.call(reference, *words, args),
                           lambda response: parse(_checked(response)))
+
+
+def _own(built_in: type) -> Any:
+    """A class of one session, to which the methods of its node's plugins are added."""
+    return type(built_in.__name__, (built_in,), {'__module__': built_in.__module__,
+                                                 '__doc__': built_in.__doc__})
 
 
 def _checked(response: Any) -> Any:

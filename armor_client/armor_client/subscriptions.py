@@ -116,7 +116,8 @@ class Change:
             for d in self.directives)
 
 
-def query_directive(client: str, reference: str, query: Query) -> ArmorDirectiveReq:
+def query_directive(client: str, reference: str, query: Query,
+                    transport: Optional[ArmorTransport] = None) -> ArmorDirectiveReq:
     """The directive a subscription asks.
 
     Args:
@@ -125,6 +126,8 @@ def query_directive(client: str, reference: str, query: Query) -> ArmorDirective
         query: a SPARQL SELECT or ASK; or a QUERY directive as words (``QUERY IND CLASS
             OccupiedRoom``, QUERY may be left out; quote arguments with spaces); or an
             ArmorDirectiveReq.
+        transport: the node to ask for its catalogue when no command here starts the words
+            (a plugin's query); None: only the commands known here.
 
     Returns:
         The directive.
@@ -140,6 +143,9 @@ def query_directive(client: str, reference: str, query: Query) -> ArmorDirective
     if words and words[0].upper() != 'QUERY':
         words.insert(0, 'QUERY')
     command, arguments = commands.split_directive(words)
+    if command is None and transport is not None:
+        commands.find_on(transport, *words[:3])  # learns the node's catalogue
+        command, arguments = commands.split_directive(words)
     if command is None or command.words[0] != 'QUERY':
         raise ArmorArgumentError(f'no QUERY command starts "{query}" (docs/commands.md#queries)',
                                  205)
@@ -255,7 +261,7 @@ class Subscription:
                  query: Query, callback: Callable[[AnswerChange], Any], *, iris: bool = False,
                  timeout_s: Optional[float] = None):
         self.reference = reference
-        self.directive = query_directive(client_name, reference, query)
+        self.directive = query_directive(client_name, reference, query, transport)
         self._decode = _decoder(iris)
         self._callback = callback
         self._transport = transport

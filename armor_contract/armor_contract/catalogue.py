@@ -23,6 +23,29 @@ GLOBAL = 'global'
 
 
 @dataclass(frozen=True)
+class FaceParameter:
+    """One parameter of a command's client method: its name and type (``string`` or ``int``)."""
+
+    name: str
+    type: str
+
+
+@dataclass(frozen=True)
+class Face:
+    """The method a command has in the clients (its registration's ``face``).
+
+    Attributes:
+        method: the method's name, the same in Python and C++.
+        answer: what it returns: ``none``, ``entities``, ``values`` or ``expressions``.
+        parameters: one per required argument; a variadic command's one list.
+    """
+
+    method: str
+    answer: str
+    parameters: Tuple[FaceParameter, ...]
+
+
+@dataclass(frozen=True)
 class Command:
     """One command / spec combination.
 
@@ -38,6 +61,7 @@ class Command:
         changes_ontology: whether it can change what an ontology says.
         summary: one line saying what it does.
         origin: ``core`` for a built-in command, else the file name of the plugin jar.
+        face: its client method, when its registration declares one.
     """
 
     words: Tuple[str, str, str]
@@ -49,6 +73,7 @@ class Command:
     changes_ontology: bool
     summary: str
     origin: str = 'core'
+    face: Optional[Face] = None
 
     @property
     def name(self) -> str:
@@ -115,6 +140,13 @@ def _words(key: str) -> Tuple[str, str, str]:
     return (parts[0], parts[1], parts[2])
 
 
+def _face(data: Optional[Dict[str, Any]]) -> Optional[Face]:
+    if not data:
+        return None
+    return Face(data['method'], data['answer'],
+                tuple(FaceParameter(p['name'], p['type']) for p in data['parameters']))
+
+
 def parse(data: Dict[str, Any]) -> Catalogue:
     """A catalogue from the core's JSON (``--catalogue`` or the ``catalogue`` socket operation).
 
@@ -129,7 +161,7 @@ def parse(data: Dict[str, Any]) -> Catalogue:
         kind=entry['kind'], required=tuple(entry['args']['required']),
         optional=tuple(entry['args']['optional']), variadic=entry['args']['variadic'],
         changes_ontology=entry['changes_ontology'], summary=entry['summary'],
-        origin=entry.get('origin', 'core'))
+        origin=entry.get('origin', 'core'), face=_face(entry.get('face')))
         for entry in data['commands'])
     codes = tuple(ExitCodeEntry(e['code'], e['name'], e['meaning']) for e in data['exit_codes'])
     settings = tuple(Setting(s['key'], s['type'], s['default'], s['description'], s['read_only'])

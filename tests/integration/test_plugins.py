@@ -9,8 +9,11 @@ core), exit codes, the reference lock; one that throws or loops answers (220, 21
 plugin_timeout_ms, its change undone, and the node, the core and the reference stay usable.
 """
 
+import asyncio
+import inspect
 import os
 import pathlib
+import queue
 import signal
 import subprocess
 import sys
@@ -19,6 +22,7 @@ import time
 import zipfile
 
 from armor_client import Armor, ArmorTransport, commands, directive
+from armor_client.aio import AsyncArmor
 from conftest import iri, iris, ONTOLOGIES, REPO, start_node
 import pytest
 
@@ -33,6 +37,7 @@ import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.command.CommandGroup;
 import io.github.armor.core.command.CommandTable;
+import io.github.armor.core.command.Face;
 import java.util.List;
 import org.semanticweb.owlapi.model.AddAxiom;
 public final class MarkCommands implements CommandGroup {
@@ -54,7 +59,10 @@ public final class MarkCommands implements CommandGroup {
                     while (true) {
                         try { while (true) { spins++; } } catch (Throwable ignored) { }
                     } });
+        table.command("QUERY MARK CLASH").args("class").summary("a face whose method clients have")
+                .face("instances", Face.Answer.ENTITIES, "cls").query(c -> c.ok(List.of()));
         table.command("QUERY MARK SLEEPING").args("ms").summary("holds the reference a while")
+                .face("sleep_for", Face.Answer.VALUES, "ms:int")
                 .query(c -> {
                     try { Thread.sleep(Long.parseLong(c.arg(0))); }
                     catch (InterruptedException e) { return c.ok(List.of("interrupted")); }
@@ -144,6 +152,93 @@ def test_the_example_plugin_adds_commands_clients_discover(plugged):
          'robotics', 'HELLO', 'world'], capture_output=True, text=True, timeout=120)
     assert shown.returncode == 0, shown.stderr
     assert 'hello world' in shown.stdout
+
+
+CLASH = (r'QUERY MARK CLASH \(plugin marks.jar\) gets no method instances\(\): '
+         r'(Async)?Reference already has instances\(\)')
+
+
+def test_a_plugin_command_with_a_face_is_a_method_of_python_references(plugged):
+    """Issue 30: the node's catalogue gives a session's references its plugins' methods."""
+    _, armor = plugged
+    with Armor('faces', namespace='/plugged') as client, Armor('other', namespace='/plugged') as other:
+        robotics = client.reference('robotics')
+        with pytest.warns(RuntimeWarning, match=CLASH):
+            assert robotics.greeted() == []  # the first name it lacks learns the catalogue
+        robotics.greet('kitchen')
+        assert robotics.greeted() == ['kitchen']
+        assert robotics.greeting_sentences() == ['hello kitchen']
+        assert robotics.sleep_for(10) == ['slept']
+        with robotics.batch() as batch:  # a batch queues a plugin's change too
+            batch.greet('bedroom')
+        assert robotics.greeted() == ['bedroom', 'kitchen']
+        assert str(inspect.signature(robotics.greet)) == '(individual: str) -> None'
+        assert robotics.greet.__doc__.startswith(
+            'Asserts that the individual was greeted (ADD GREETING; plugin hello.jar).')
+        # Bad arguments are refused before anything is sent, naming what is wrong.
+        with pytest.raises(TypeError, match=r"greet\(\): missing a required argument: 'individual'"):
+            robotics.greet()
+        with pytest.raises(TypeError, match=r"sleep_for\(\): ms must be a whole number, not 'soon'"):
+            robotics.sleep_for('soon')
+        with pytest.raises(TypeError, match=r'greet\(\): individual must be a str, not NoneType'):
+            robotics.greet(None)
+        with pytest.raises(AttributeError, match='nor does a plugin of the node give one'):
+            robotics.no_such_method()
+        # A face whose name the client has is refused: the built-in method keeps it.
+        with pytest.warns(RuntimeWarning, match=CLASH):
+            learned = client.learn_plugin_methods()
+        assert {'greet', 'greeted', 'greeting_sentences', 'sleep_for'} <= set(learned.added)
+        assert 'instances' not in learned.added and 'QUERY MARK CLASH' in learned.refused
+        assert robotics.instances('Greeted') == ['bedroom', 'kitchen']
+        # Another session has learned nothing: its references lack the methods until it asks.
+        assert 'greet' not in vars(type(other.reference('robotics')))
+
+    async def asynchronously():
+        async with AsyncArmor('faces_aio', namespace='/plugged') as client:
+            robotics = client.reference('robotics')
+            assert await robotics.greeted() == ['bedroom', 'kitchen']
+            await robotics.greet('corridor1')
+            return await robotics.greeted()
+
+    with pytest.warns(RuntimeWarning, match=CLASH):
+        assert asyncio.run(asynchronously()) == ['bedroom', 'corridor1', 'kitchen']
+    for room in ('kitchen', 'bedroom', 'corridor1'):
+        assert send(armor, 'robotics', 'REMOVE IND CLASS', room, 'Greeted').success
+
+
+def test_a_plugin_query_answers_from_the_published_state_while_the_reference_is_held(plugged):
+    _, armor = plugged
+    assert send(armor, 'robotics', 'ADD GREETING', 'kitchen').success
+    assert greeted(armor) == [iri('kitchen')]  # reasoned: the state it publishes knows it
+    holder = {}
+    worker = threading.Thread(target=lambda: holder.setdefault(
+        'answer', send(armor, 'robotics', 'QUERY MARK SLEEPING', 1200)))
+    worker.start()
+    time.sleep(0.3)
+    started = time.monotonic()
+    busy = send(armor, 'robotics', 'QUERY GREETING')
+    took = time.monotonic() - started
+    # A query of the plugin registered without a source waits for the reference, and gives up.
+    waited = send(armor, 'robotics', 'QUERY GREETING SENTENCES')
+    worker.join(timeout=60)
+    assert list(holder['answer'].queried_objects) == ['slept']
+    assert busy.success and list(busy.queried_objects) == [iri('kitchen')], busy.error_description
+    assert busy.error_description.startswith('answered from reasoned state revision')
+    assert took < LOCK_WAIT_MS / 1000, took
+    assert waited.exit_code == 211, waited.error_description
+    assert send(armor, 'robotics', 'REMOVE IND CLASS', 'kitchen', 'Greeted').success
+
+
+def test_a_subscription_to_a_plugin_query_follows_the_form_it_names(plugged):
+    _, armor = plugged
+    changes = queue.Queue()
+    with Armor('watcher', namespace='/plugged') as client:
+        with client.reference('robotics').subscribe('QUERY GREETING SENTENCES', changes.put):
+            assert changes.get(timeout=60).added == []
+            assert send(armor, 'robotics', 'ADD GREETING', 'kitchen').success
+            # The individuals greeted (QUERY GREETING), not the sentences.
+            assert changes.get(timeout=60).added == ['kitchen']
+    assert send(armor, 'robotics', 'REMOVE IND CLASS', 'kitchen', 'Greeted').success
 
 
 def test_a_plugin_reasoner_factory_is_used_by_name(plugged):

@@ -50,8 +50,9 @@ final class PluginGuard {
     /** An answer source a plugin registered, run under the guard (no answer: null inside it). */
     static AnswerSource guard(String key, String origin, AnswerSource source) {
         Handler asHandler = context -> source.answer(context).orElse(null);
-        return context -> Optional.ofNullable(run(key, origin, asHandler, source.getClass().getClassLoader(),
-                context));
+        ClassLoader loader = source instanceof PluginStateSource adapted ? adapted.loader()
+                : source.getClass().getClassLoader();
+        return context -> Optional.ofNullable(run(key, origin, asHandler, loader, context));
     }
 
     private static Response run(String key, String origin, Handler handler, ClassLoader loader,

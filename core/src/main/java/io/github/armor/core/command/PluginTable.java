@@ -3,7 +3,9 @@ package io.github.armor.core.command;
 
 import io.github.armor.core.api.Response;
 import io.github.armor.core.spi.CommandBuilder;
+import io.github.armor.core.spi.FaceAnswer;
 import io.github.armor.core.spi.Handler;
+import io.github.armor.core.spi.StateAnswer;
 
 /** Where a plugin's {@link io.github.armor.core.spi.CommandGroup} registers: the core's table, seen through the SPI. */
 final class PluginTable implements io.github.armor.core.spi.CommandTable {
@@ -64,6 +66,24 @@ final class PluginTable implements io.github.armor.core.spi.CommandTable {
         @Override
         public CommandBuilder summary(String text) {
             builder.summary(text);
+            return this;
+        }
+
+        @Override
+        public CommandBuilder face(String method, FaceAnswer answer, String... parameters) {
+            builder.face(method, Face.Answer.valueOf(answer.name()), parameters);
+            return this;
+        }
+
+        @Override
+        public CommandBuilder whileBusy(StateAnswer source) {
+            builder.whileBusy(new PluginStateSource(source));
+            return this;
+        }
+
+        @Override
+        public CommandBuilder subscribedAs(String words) {
+            builder.subscribedAs(words);
             return this;
         }
 

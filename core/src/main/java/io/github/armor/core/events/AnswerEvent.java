@@ -3,7 +3,6 @@ package io.github.armor.core.events;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
-import java.time.Instant;
 import java.util.List;
 
 /**
@@ -38,9 +37,8 @@ public record AnswerEvent(String subscription, String reference, long revision, 
 
     static AnswerEvent now(String subscription, String reference, long revision, List<String> added,
                            List<String> removed, int exitCode, String errorDescription) {
-        Instant now = Instant.now();
         return new AnswerEvent(subscription, reference, revision, added, removed, exitCode, errorDescription,
-                now.getEpochSecond() * 1_000_000_000L + now.getNano());
+                CoreEvent.nowNanos());
     }
 
     @Override

@@ -5,7 +5,6 @@ import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.DirectiveJson;
-import java.time.Instant;
 import java.util.List;
 
 /**
@@ -34,10 +33,9 @@ public record ChangeEvent(String reference, long revision, String clientName, Li
 
     /** An acknowledged change made now. */
     public static ChangeEvent now(String reference, long revision, List<Directive> directives, boolean consistent) {
-        Instant now = Instant.now();
         String client = directives.isEmpty() ? "" : directives.get(0).clientName();
         return new ChangeEvent(reference, revision, client, directives, 0, consistent,
-                now.getEpochSecond() * 1_000_000_000L + now.getNano());
+                CoreEvent.nowNanos());
     }
 
     @Override

@@ -2,6 +2,7 @@
 package io.github.armor.core.events;
 
 import com.google.gson.JsonObject;
+import java.time.Instant;
 
 /**
  * Something the core tells its clients without being asked: a change of a reference or a new
@@ -14,4 +15,10 @@ public interface CoreEvent {
 
     /** The frame sent to clients. */
     JsonObject toJson();
+
+    /** The wall-clock time now, in nanoseconds since the epoch: when an event happened. */
+    static long nowNanos() {
+        Instant now = Instant.now();
+        return now.getEpochSecond() * 1_000_000_000L + now.getNano();
+    }
 }

@@ -24,6 +24,23 @@ public interface CommandBuilder {
     /** What the command does, in one line (required: the catalogue, the CLI and the docs show it). */
     CommandBuilder summary(String text);
 
+    /**
+     * The method the clients get for it: a Python client finds it in the node's catalogue and
+     * adds it to its references; its name, what it answers, and one parameter per required
+     * argument, {@code "count:int"} for a whole number (a variadic command's one list). Only a
+     * query (answering something) or a manipulation ({@link FaceAnswer#NONE}) has one.
+     */
+    CommandBuilder face(String method, FaceAnswer answer, String... parameters);
+
+    /**
+     * A query answered, while another directive holds its reference, from the state its
+     * reasoner last published; sources are asked in the order given, then the handler waits.
+     */
+    CommandBuilder whileBusy(StateAnswer source);
+
+    /** A subscription to this query asks the query written {@code words} instead, with the same arguments. */
+    CommandBuilder subscribedAs(String words);
+
     /** A read of an existing reference: never refused under a mount, never journaled. */
     void query(Handler handler);
 

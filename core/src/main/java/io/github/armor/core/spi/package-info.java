@@ -4,7 +4,10 @@
  * with {@link java.util.ServiceLoader} registers its commands through a {@link CommandTable};
  * each command's {@link Handler} sees its directive through a {@link Context}, the reference's
  * knowledge through the read-only {@link Knowledge}, submits changes through
- * {@link Context#change} and checks client paths through {@link Paths}. Nothing here can set a
+ * {@link Context#change} and checks client paths through {@link Paths}. A registration may add,
+ * as a built-in command's does, a face (the clients' method, {@link FaceAnswer}), a
+ * {@link StateAnswer} that answers from the last {@link PublishedState} while a writer holds the
+ * reference, and the form a subscription asks. Nothing here can set a
  * revision, acknowledge a change or end a transaction: the core does that by the command's kind.
  * These types, with the api package, are the core's stable surface; everything else may change.
  */

@@ -7,6 +7,7 @@ import io.github.armor.core.answers.Syntax;
 import io.github.armor.core.api.ArmorException;
 import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
+import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.command.CommandGroup;
 import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.reference.Reference;
@@ -14,10 +15,12 @@ import io.github.armor.core.sparql.Sparql;
 import java.util.List;
 import java.util.Set;
 import java.util.function.BiFunction;
+import java.util.function.Function;
 import java.util.stream.Stream;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLClassExpression;
 import org.semanticweb.owlapi.model.OWLDataProperty;
+import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLLiteral;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLObjectProperty;
@@ -72,21 +75,28 @@ public final class Queries implements CommandGroup {
             return c.ok(c.render().entities(same.stream()));
         });
         table.command("QUERY IND DATAPROP").args("ind").emptySurplusIgnored()
-                .summary("the data properties that have values for it").query(c -> {
-            Reference reference = c.reference();
-            OWLNamedIndividual individual = c.individual(0);
-            Stream<OWLDataProperty> inferred = reference.ontology().dataPropertiesInSignature(Imports.INCLUDED)
-                    .filter(p -> !dataValues(reference, p, individual).isEmpty());
-            return c.ok(c.render().entities(inferred));
-        });
+                .summary("the data properties that have values for it")
+                .query(c -> withValues(c, o -> o.dataPropertiesInSignature(Imports.INCLUDED), Queries::dataValues));
         table.command("QUERY IND OBJECTPROP").args("ind").emptySurplusIgnored()
-                .summary("the object properties that have values for it").query(c -> {
-            Reference reference = c.reference();
-            OWLNamedIndividual individual = c.individual(0);
-            Stream<OWLObjectProperty> inferred = reference.ontology().objectPropertiesInSignature(Imports.INCLUDED)
-                    .filter(p -> !objectValues(reference, p, individual).isEmpty());
-            return c.ok(c.render().entities(inferred));
-        });
+                .summary("the object properties that have values for it")
+                .query(c -> withValues(c, o -> o.objectPropertiesInSignature(Imports.INCLUDED),
+                        Queries::objectValues));
+    }
+
+    /** What a property's values for an individual are, asserted plus inferred. */
+    @FunctionalInterface
+    private interface Values<P> {
+        Set<?> of(Reference reference, P property, OWLNamedIndividual individual);
+    }
+
+    /** The properties of the ontology that have a value for the individual argument. */
+    private static <P extends OWLEntity> Response withValues(CommandContext c,
+                                                             Function<OWLOntology, Stream<P>> properties,
+                                                             Values<P> values) {
+        Reference reference = c.reference();
+        OWLNamedIndividual individual = c.individual(0);
+        return c.ok(c.render().entities(properties.apply(reference.ontology())
+                .filter(p -> !values.of(reference, p, individual).isEmpty())));
     }
 
     private static void registerClassQueries(CommandTable table) {

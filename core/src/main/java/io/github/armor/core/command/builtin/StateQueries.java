@@ -1,14 +1,15 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.command.builtin;
 
+import static io.github.armor.core.command.PublishedAnswers.fromPublished;
+import static io.github.armor.core.command.PublishedAnswers.inconsistent;
+import static io.github.armor.core.command.PublishedAnswers.named;
+
 import io.github.armor.core.answers.Rendering;
-import io.github.armor.core.api.ArmorException;
-import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.command.AnswerSource;
 import io.github.armor.core.command.CommandContext;
 import io.github.armor.core.reasoning.InferredState;
-import io.github.armor.core.reasoning.PublishedStates.Published;
 import io.github.armor.core.reference.Reference;
 import java.util.List;
 import java.util.Optional;
@@ -44,36 +45,6 @@ final class StateQueries {
                 known, context.render()));
     }
 
-    /** What a published state answers: the list it gives, or empty when it cannot answer exactly. */
-    @FunctionalInterface
-    private interface StateAnswer {
-        Optional<List<String>> objects(Reference reference, InferredState state, Predicate<OWLEntity> known);
-    }
-
-    /** The answer from the published state, or empty when the directive must wait for the reference. */
-    private static Optional<Response> fromPublished(CommandContext context, StateAnswer answer) {
-        Reference reference = context.reference();
-        Optional<Published> published = reference.publishedState();
-        // A client reads its own writes: a state older than its last change is no answer for it.
-        if (published.isEmpty() || published.get().revision()
-                < reference.changeHistory().lastRevisionOf(context.directive().clientName())) {
-            return Optional.empty();
-        }
-        InferredState state = published.get().state();
-        Predicate<OWLEntity> known = entity -> entity instanceof OWLClass owlClass ? state.knows(owlClass)
-                : entity instanceof OWLNamedIndividual individual && state.knows(individual);
-        try {
-            return answer.objects(reference, state, known).map(list -> Response.ok(state.consistent(), list)
-                    .withDescription(note(published.get(), reference)));
-        } catch (ArmorException e) {
-            if (e.exitCode() != ExitCode.INCONSISTENT) {
-                return Optional.empty();
-            }
-            return Optional.of(Response.failure(e, false).withDescription(e.getMessage() + "; "
-                    + note(published.get(), reference)));
-        }
-    }
-
     private static Optional<List<String>> types(Reference reference, InferredState state, String argument,
                                                 boolean direct, Predicate<OWLEntity> known, Rendering rendering) {
         return named(reference, EntityType.NAMED_INDIVIDUAL, argument, known).flatMap(individual -> {
@@ -84,22 +55,5 @@ final class StateQueries {
             return state.classesOf(individual, direct)
                     .map(classes -> rendering.entities(classes.stream().filter(c -> !c.isOWLThing())));
         });
-    }
-
-    /** The entity, when the state knows it; a name it does not know is the ordinary path's to describe. */
-    private static <E extends OWLEntity> Optional<E> named(Reference reference, EntityType<E> type, String argument,
-                                                           Predicate<OWLEntity> known) {
-        E entity = reference.names().entity(type, argument, known);
-        return entity.isBuiltIn() || known.test(entity) ? Optional.of(entity) : Optional.empty();
-    }
-
-    private static <T> T inconsistent(Reference reference) {
-        throw new ArmorException(ExitCode.INCONSISTENT, "reference '" + reference.name()
-                + "' is inconsistent; QUERY CONSISTENCY explains why");
-    }
-
-    private static String note(Published published, Reference reference) {
-        return "answered from reasoned state revision " + published.revision() + " while reference '"
-                + reference.name() + "' was busy";
     }
 }
