@@ -160,6 +160,34 @@ def test_reads_of_a_reference_take_turns_and_leave_it_nine_tenths_of_the_time():
     assert spans['other'][0] < first[1]
 
 
+def test_a_question_asked_once_takes_its_turn_but_holds_no_panel_back():
+    async def scenario():
+        answers = SharedAnswers()
+        spans = {}
+
+        def timed(name, duration):
+            async def fetch():
+                started = time.monotonic()
+                await asyncio.sleep(duration)
+                spans[name] = (started, time.monotonic())
+                return {}
+            return fetch
+        view = asyncio.create_task(answers.get('classes', 1, 30.0, timed('classes', 0.05), 'map'))
+        await asyncio.sleep(0.01)
+        await answers.get('why', 1, 30.0, timed('why', 0.3), 'map', on_demand=True)
+        await view
+        await answers.get('individual', 1, 30.0, timed('individual', 0.01), 'map')
+        return spans
+
+    spans = asyncio.run(scenario())
+    # The question waited for the view in flight (turns), not for the view's pause after it.
+    assert spans['why'][0] >= spans['classes'][1] - 0.001
+    assert spans['why'][0] - spans['classes'][1] < (BUSY_SHARE_INVERSE - 1) * 0.05
+    # The next panel owes the view before the question its pause, not 9 x the question's 0.3 s.
+    waited = spans['individual'][0] - spans['why'][1]
+    assert waited < (BUSY_SHARE_INVERSE - 1) * 0.3 / 2, waited
+
+
 def test_a_failed_fetch_is_not_kept():
     async def scenario():
         answers = SharedAnswers()

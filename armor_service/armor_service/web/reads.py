@@ -87,7 +87,9 @@ class SharedAnswers:
     Fetches that name a ``reference`` take turns on it, and each starts no sooner than
     ``BUSY_SHARE_INVERSE - 1`` times the previous one's duration after it ended: whatever the
     pages ask, their reads of one reference keep it busy a ``1 / BUSY_SHARE_INVERSE`` share of
-    the time at most.
+    the time at most. An ``on_demand`` fetch (a question a person asked once, such as "why?")
+    takes its turn but neither waits for that pause nor sets it: a slow explanation would
+    otherwise hold every panel of its reference back for nine times its duration.
     """
 
     def __init__(self, entries: int = CACHE_ENTRIES):
@@ -100,7 +102,8 @@ class SharedAnswers:
         self._limit = entries
 
     async def get(self, key: Hashable, version: Any, max_age_s: float,
-                  fetch: Callable[[], Awaitable[Any]], reference: Optional[str] = None) -> bytes:
+                  fetch: Callable[[], Awaitable[Any]], reference: Optional[str] = None,
+                  on_demand: bool = False) -> bytes:
         """The answer of fetch() for key at version, as JSON bytes."""
         kept = self._entries.get(key)
         if kept is not None and kept[0] == version and time.monotonic() - kept[1] < max_age_s:
@@ -111,7 +114,7 @@ class SharedAnswers:
         if task is None:
             # A task of its own: a page that goes away does not cancel the others' answer.
             task = asyncio.get_running_loop().create_task(
-                self._fetch(key, version, fetch, reference))
+                self._fetch(key, version, fetch, reference, on_demand))
             self._in_flight[flight] = task
             task.add_done_callback(lambda done: self._landed(flight, done))
         return await asyncio.shield(task)
@@ -122,9 +125,12 @@ class SharedAnswers:
             task.exception()  # retrieved: a failure nobody waits for any more is no warning
 
     async def _fetch(self, key: Hashable, version: Any, fetch: Callable[[], Awaitable[Any]],
-                     reference: Optional[str]) -> bytes:
+                     reference: Optional[str], on_demand: bool) -> bytes:
         if reference is None:
             body = json.dumps(await fetch(), ensure_ascii=False).encode('utf-8')
+        elif on_demand:
+            async with self._turns.setdefault(reference, asyncio.Lock()):
+                body = json.dumps(await fetch(), ensure_ascii=False).encode('utf-8')
         else:
             async with self._turns.setdefault(reference, asyncio.Lock()):
                 ended, took = self._last_fetch.get(reference, (0.0, 0.0))

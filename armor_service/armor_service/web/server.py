@@ -223,8 +223,8 @@ class _Routes:
         app.router.add_post(prefix + '/sparql', self.sparql)
         SceneRoutes(self._json_lines).add_to(app, prefix)
         ExplanationRoutes(self._reads.directive, lambda key, fetch, reference: self._shared(
-            key, self._live.version(reference), REFERENCE_MAX_AGE_S, fetch, reference)
-        ).add_to(app, prefix)
+            key, self._live.version(reference), REFERENCE_MAX_AGE_S, fetch, reference,
+            on_demand=True)).add_to(app, prefix)
 
     async def index(self, request: web.Request) -> web.StreamResponse:
         return web.FileResponse(STATIC / 'index.html')
@@ -358,9 +358,9 @@ class _Routes:
                                   REFERENCE_MAX_AGE_S, fetch, reference)
 
     async def _shared(self, key, version, max_age_s: float, fetch: Callable[[], Awaitable[Any]],
-                      reference: Optional[str] = None) -> web.Response:
+                      reference: Optional[str] = None, on_demand: bool = False) -> web.Response:
         body = await self._guarded(
-            lambda: self._answers.get(key, version, max_age_s, fetch, reference))
+            lambda: self._answers.get(key, version, max_age_s, fetch, reference, on_demand))
         return web.Response(body=body, content_type='application/json')
 
     async def _guarded(self, call: Callable[[], Awaitable[Any]]) -> Any:
