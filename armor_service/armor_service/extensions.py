@@ -22,6 +22,7 @@ from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service.callback_guard import guarded
 from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.clock import Clock, ClockType
 from rclpy.node import Node
 
 ENTRY_POINT_GROUP = 'armor_service.extensions'
@@ -113,9 +114,14 @@ class ExtensionContext:
         return self._node.create_publisher(msg_type, topic, qos, **kwargs)
 
     def create_timer(self, period_s: float, callback: Callable) -> Any:
-        """A timer on the node whose callback cannot take the node down."""
+        """A timer on the node whose callback cannot take the node down.
+
+        Its period is counted on the steady clock, so a wall clock that steps back does not
+        stop it.
+        """
         return self._node.create_timer(period_s, self._guarded(callback, 'timer'),
-                                       callback_group=self.callback_group)
+                                       callback_group=self.callback_group,
+                                       clock=Clock(clock_type=ClockType.STEADY_TIME))
 
     def _guarded(self, callback: Callable, what: str) -> Callable:
         return guarded(callback, self.logger, f'{what} of extension {self.name}')

@@ -31,6 +31,7 @@ from armor_msgs.srv import ArmorSubscribe, ArmorUnsubscribe
 from armor_service import core_ops, wire
 from armor_service.callback_guard import guarded
 from armor_service.core_process import CoreProcess, CoreUnavailable
+from rclpy.clock import Clock, ClockType
 from rclpy.event_handler import PublisherEventCallbacks
 
 # No QoS event handlers on answer publishers: rclpy keeps a reference to each handler it ever
@@ -91,8 +92,11 @@ class SubscriptionTopics:
                             guarded(self.unsubscribe_callback, logger,
                                     f'service {UNSUBSCRIBE_SERVICE}', _refuse),
                             qos_profile=SERVICE_QOS, callback_group=callback_group)
+        # On the steady clock: a ROS-time timer waits for the wall clock to come back to its
+        # next call, so a clock stepped back an hour stopped the sweep for an hour.
         node.create_timer(1.0, guarded(self.end_abandoned, logger, 'the subscription sweep'),
-                          callback_group=callback_group)
+                          callback_group=callback_group,
+                          clock=Clock(clock_type=ClockType.STEADY_TIME))
 
     def __len__(self) -> int:
         """How many subscriptions the node holds."""

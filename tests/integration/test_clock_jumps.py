@@ -6,7 +6,10 @@ import json
 import os
 import time
 
-from conftest import NS, call_words, first_call_after_start, start_node
+from armor_client import ArmorTransport, directive
+from armor_contract.events import SUBSCRIBE_SERVICE
+from armor_msgs.srv import ArmorSubscribe
+from conftest import call_service, call_words, first_call_after_start, NS, start_node
 import pytest
 
 pytestmark = pytest.mark.runs_for_minutes
@@ -22,14 +25,13 @@ def test_clock_jumps_leave_mount_leases_and_checkpoints_on_time(tmp_path):
     they run; the monotonic clock is left alone, as a real clock step leaves it. Durations (a
     mount's lease, the checkpoint interval) must not stretch or shrink with the wall clock.
     """
-    from armor_client import ArmorTransport
     assert os.path.exists(LIBFAKETIME), 'no libfaketime: bash tools/setup.sh test installs it'
     offset = tmp_path / 'faketime'
     offset.write_text('+0\n')
     env = dict(os.environ, LD_PRELOAD=LIBFAKETIME, FAKETIME_TIMESTAMP_FILE=str(offset),
                FAKETIME_DONT_FAKE_MONOTONIC='1', FAKETIME_CACHE_DURATION='1')
     args = ('-p', 'mount_lease_s:=30', '-p', 'checkpoint_every_s:=2',
-            '-p', 'checkpoint_every_changes:=100000')
+            '-p', 'checkpoint_every_changes:=100000', '-p', 'subscription_idle_s:=2.0')
     node = start_node(tmp_path, *args, namespace='/clock', env=env)
     armor = ArmorTransport(namespace='/clock', service_wait_s=300.0)
 
@@ -52,8 +54,19 @@ def test_clock_jumps_leave_mount_leases_and_checkpoints_on_time(tmp_path):
         assert time.monotonic() - mounted < 30, 'too slow to tell: the lease ran out meanwhile'
         time.sleep(max(0.0, mounted + 31.5 - time.monotonic()))
         assert call_words(armor, 'robotics', 'ADD IND CLASS', 'late', 'Robot').success
-        # Checkpoints every 2 s of the monotonic clock, whatever the wall clock did.
         step('-3600')
+        # A subscription nobody listens to ends 2 s later: the node's sweep runs on the
+        # monotonic clock too, not a day later when the wall clock is back where it was.
+        subscribe = armor.node.create_client(ArmorSubscribe, f'/clock/{SUBSCRIBE_SERVICE}')
+        assert subscribe.wait_for_service(timeout_sec=60)
+        unheard = call_service(subscribe, ArmorSubscribe.Request(armor_request=directive(
+            'watcher', 'robotics', 'QUERY', 'IND', 'CLASS', ['Robot'])))
+        assert unheard.success, unheard.error_description
+        deadline = time.monotonic() + 30
+        while f'subscription {unheard.subscription_id} ended' not in node.log():
+            assert time.monotonic() < deadline, 'the subscription sweep stopped with the clock'
+            time.sleep(0.2)
+        # Checkpoints every 2 s of the monotonic clock, whatever the wall clock did.
         before = meta_checkpoint()
         assert call_words(armor, 'robotics', 'ADD IND CLASS', 'c1', 'Robot').success
         time.sleep(3)
