@@ -322,10 +322,14 @@ def test_log_file_records_directives_and_stops(call, armor_node, load):
 
 @pytest.fixture(scope='module')
 def guarded(tmp_path_factory):
-    """A node of its own: a 3 s default SPARQL limit, 3 s lock waits, lenient imports."""
+    """A node of its own: a 3 s default SPARQL limit, lenient imports.
+
+    Lock waits stay at their default: a query that held the reference would show as no change
+    answered while it ran, and a short wait only made a write behind another write's
+    reasoning on a loaded machine fail.
+    """
     node = start_node(tmp_path_factory.mktemp('guarded'), '-p', 'sparql_timeout_ms:=3000',
-                      '-p', 'lock_wait_ms:=3000', '-p', 'ignore_missing_imports:=true',
-                      namespace='/guarded')
+                      '-p', 'ignore_missing_imports:=true', namespace='/guarded')
     yield node
     node.stop()
 
