@@ -18,6 +18,7 @@ from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 import rclpy
+from rclpy.exceptions import InvalidHandle
 from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
 
@@ -76,10 +77,12 @@ class ArmorTransport:
             node = rclpy.create_node(f'armor_client_{os.getpid()}_{next(_node_numbers)}')
             self._executor = MultiThreadedExecutor(num_threads=2)
             self._executor.add_node(node)
-            self._spinner = threading.Thread(target=self._executor.spin, daemon=True,
+            self._closing = threading.Event()
+            self._spinner = threading.Thread(target=self._spin, daemon=True,
                                              name='armor-client-spin')
-            self._spinner.start()
         self.node: Node = node
+        if self._owns_node:
+            self._spinner.start()
         self.namespace = namespace
         self.service_wait_s = service_wait_s
         prefix = namespace.rstrip('/') + '/' if namespace else ''
@@ -106,6 +109,7 @@ class ArmorTransport:
         self.node.destroy_client(self._directive)
         self.node.destroy_client(self._list)
         if self._owns_node:
+            self._closing.set()
             self._executor.shutdown()
             self._spinner.join()
             self.node.destroy_node()
@@ -117,6 +121,19 @@ class ArmorTransport:
 
     def __exit__(self, *exc) -> None:
         self.close()
+
+    def _spin(self) -> None:
+        """The executor's loop, kept alive when an entity of the node is destroyed under it.
+
+        rclpy raises InvalidHandle out of spin when a client, subscription or event handler of
+        this node (the caller may add its own) is destroyed while the executor builds its wait
+        set: the thread would end, and every later call would wait for an answer nobody takes in.
+        """
+        while not self._closing.is_set() and rclpy.ok(context=self.node.context):
+            try:
+                self._executor.spin_once(timeout_sec=0.5)
+            except InvalidHandle:
+                continue
 
     def _call(self, client, message, timeout_s):
         if client.srv_name not in self._ready:

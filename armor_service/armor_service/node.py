@@ -28,7 +28,7 @@ from armor_service.subscriptions import SubscriptionTopics
 import rclpy
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
-from rclpy.exceptions import InvalidParameterTypeException
+from rclpy.exceptions import InvalidHandle, InvalidParameterTypeException
 from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions
 
@@ -295,7 +295,13 @@ def main(args=None, on_ready=None):
             on_ready(node)
         executor = MultiThreadedExecutor(num_threads=node.get_parameter('executor_threads').value)
         executor.add_node(node)
-        executor.spin()
+        while rclpy.ok():
+            try:
+                executor.spin_once(timeout_sec=1.0)
+            except InvalidHandle:
+                # A publisher (and its event handler) that the subscription sweep destroyed
+                # while the executor built its wait set: rclpy raises out of spin for it.
+                continue
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     except (RuntimeError, CoreUnavailable) as error:

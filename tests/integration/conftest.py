@@ -74,9 +74,14 @@ _DOMAIN_LOCKS = {}
 # Chosen before rclpy starts: a ROS_DOMAIN_ID the user exported for their own node (make run)
 # is the one domain the tests must stay out of. Only a process this run started itself (a
 # client script of a load test) keeps the domain it inherited: ARMOR_TEST_DOMAIN marks it.
+# A worker of a parallel run (pytest-xdist) reserves its own even when the run's controller,
+# which loads this file too when test files are named on its command line, reserved one.
 _inherited = os.environ.get('ROS_DOMAIN_ID')
-if not _inherited or os.environ.get('ARMOR_TEST_DOMAIN') != _inherited:
+_worker = os.environ.get('PYTEST_XDIST_WORKER', '')
+if (not _inherited or os.environ.get('ARMOR_TEST_DOMAIN') != _inherited
+        or os.environ.get('ARMOR_TEST_DOMAIN_WORKER', '') != _worker):
     os.environ['ROS_DOMAIN_ID'] = os.environ['ARMOR_TEST_DOMAIN'] = reserve_domain()
+    os.environ['ARMOR_TEST_DOMAIN_WORKER'] = _worker
 # armor call's relays started by tests end soon after the run (and at its end, below).
 os.environ['ARMOR_CALL_RELAY_IDLE_S'] = '60'
 
