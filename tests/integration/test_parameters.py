@@ -10,23 +10,17 @@ import shutil
 import subprocess
 import time
 
-from armor_client import ArmorTransport, directive
+from armor_client import ArmorTransport
 from armor_service.parameters import NODE_PARAMETERS
-from conftest import ONTOLOGIES, start_node, TEST_ONTOLOGIES
+from conftest import call_words, ONTOLOGIES, start_node, TEST_ONTOLOGIES
 import pytest
 
 PATH_NOT_ALLOWED = 213
 
 
-def _call(transport, reference, words, *args):
-    command, primary, secondary = (words.split() + ['', '', ''])[:3]
-    return transport.call(directive('test', reference, command, primary, secondary, args),
-                          timeout_s=120)
-
-
 def _started(node, namespace):
     transport = ArmorTransport(namespace=namespace, service_wait_s=90.0)
-    response = _call(transport, '', 'GET ALL REFS')
+    response = call_words(transport, '', 'GET ALL REFS')
     assert response.success, node.log()
     return transport
 
@@ -48,8 +42,8 @@ def test_allowed_dirs_as_a_colon_list_and_jvm_options_as_one_string(tmp_path):
                       namespace='/param_forms')
     try:
         transport = _started(node, '/param_forms')
-        assert _call(transport, 'robotics', 'SAVE', str(tmp_path / 'copy.owl')).success
-        refused = _call(transport, 'robotics', 'SAVE', str(TEST_ONTOLOGIES / 'copy.owl'))
+        assert call_words(transport, 'robotics', 'SAVE', str(tmp_path / 'copy.owl')).success
+        refused = call_words(transport, 'robotics', 'SAVE', str(TEST_ONTOLOGIES / 'copy.owl'))
         assert refused.exit_code == PATH_NOT_ALLOWED, refused.error_description
         arguments = _jvm_arguments(node)
         assert '-Xmx1g' in arguments and '-XX:+ExitOnOutOfMemoryError' in arguments
@@ -65,9 +59,9 @@ def test_allowed_dirs_as_one_path(tmp_path):
                       '-p', f'preload_file:={tmp_path / "robotics.owl"}', namespace='/param_one')
     try:
         transport = _started(node, '/param_one')
-        assert _call(transport, 'robotics', 'SAVE', str(tmp_path / 'copy.owl')).success
-        outside = _call(transport, 'other', 'LOAD FILE', str(ONTOLOGIES / 'robotics.owl'), '',
-                        'false', '', 'false')
+        assert call_words(transport, 'robotics', 'SAVE', str(tmp_path / 'copy.owl')).success
+        outside = call_words(transport, 'other', 'LOAD FILE', str(ONTOLOGIES / 'robotics.owl'),
+                             '', 'false', '', 'false')
         assert outside.exit_code == PATH_NOT_ALLOWED, outside.error_description
         transport.close()
     finally:
