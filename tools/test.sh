@@ -41,11 +41,14 @@ PY
 # Test files run side by side, ARMOR_TEST_WORKERS at a time (3 by default: most of a file's time
 # is spent waiting for ROS discovery, restarts and reasoners, so 3 keep 2 cores busy). Each
 # worker reserves its own DDS domain and starts its own nodes; a file stays on one worker, so
-# its module fixtures start once. ARMOR_TEST_WORKERS=0 runs them one after the other.
+# its module fixtures start once. Files are taken in the order the suite gives them (the longest
+# first, see runs_for_minutes): xdist's default reorder by test count started the 1-test files
+# that run for minutes last. ARMOR_TEST_WORKERS=0 runs them one after the other.
 workers="${ARMOR_TEST_WORKERS:-3}"
 echo "== node, client and CLI: pytest over ROS 2 ($workers files at a time)"
 if [ "$workers" = 0 ]; then
   python -m pytest -p no:cacheprovider "$@"
 else
-  python -m pytest -p no:cacheprovider --numprocesses "$workers" --dist loadfile "$@"
+  python -m pytest -p no:cacheprovider --numprocesses "$workers" --dist loadfile \
+    --no-loadscope-reorder "$@"
 fi

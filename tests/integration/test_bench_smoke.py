@@ -18,7 +18,7 @@ import sys
 from conftest import release_domain, reserve_domain
 import pytest
 
-pytestmark = pytest.mark.runs_for_minutes
+pytestmark = pytest.mark.runs_for_minutes(6)
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 SECTIONS = ('## Summary', '## Machine and versions', '## 1. Transport overhead',

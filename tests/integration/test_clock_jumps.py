@@ -12,7 +12,7 @@ from armor_msgs.srv import ArmorSubscribe
 from conftest import call_service, call_words, first_call_after_start, NS, start_node
 import pytest
 
-pytestmark = pytest.mark.runs_for_minutes
+pytestmark = pytest.mark.runs_for_minutes(3)
 
 
 LIBFAKETIME = '/usr/lib/x86_64-linux-gnu/faketime/libfaketime.so.1'

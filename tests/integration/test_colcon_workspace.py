@@ -21,7 +21,7 @@ import pytest
 
 from conftest import ONTOLOGIES
 
-pytestmark = pytest.mark.runs_for_minutes
+pytestmark = pytest.mark.runs_for_minutes(3)
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 BUILD_TIMEOUT_S = 3600  # an idle 2-core machine needs a few minutes; one shared by 8 builds took 25+

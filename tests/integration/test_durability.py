@@ -9,7 +9,7 @@ test_clock_jumps.py.
 from fault_injection import Campaign
 import pytest
 
-pytestmark = pytest.mark.runs_for_minutes
+pytestmark = pytest.mark.runs_for_minutes(2)
 
 
 @pytest.mark.parametrize('target', ['core', 'node'])

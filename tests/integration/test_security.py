@@ -34,7 +34,7 @@ import pytest
 from test_contract_support import answer, failure, succeeded, unique_name
 from test_contract_support import load  # noqa: F401 (fixture)
 
-pytestmark = pytest.mark.runs_for_minutes
+pytestmark = pytest.mark.runs_for_minutes(1)
 
 IMPORTS = TEST_ONTOLOGIES / 'imports'
 SECRET_IRI = 'http://www.example.org/armor-test/secret'

@@ -11,7 +11,7 @@ import pytest
 from conftest import start_node
 from soma_kitchen import DEFINED_CLASS, SOMA, KitchenABox
 
-pytestmark = pytest.mark.runs_for_minutes
+pytestmark = pytest.mark.runs_for_minutes(4)
 
 # Generous: the reasoning takes about 65 s of CPU for the LOAD, the move and REASON (with the
 # schema's classification on the other core); on a 2-core machine shared with other work (load

@@ -9,7 +9,7 @@ import urllib.request
 from conftest import NS, call_words, first_call_after_start, start_node
 import pytest
 
-pytestmark = pytest.mark.runs_for_minutes
+pytestmark = pytest.mark.runs_for_minutes(1)
 
 
 def _free_port() -> int:

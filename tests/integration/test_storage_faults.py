@@ -9,7 +9,7 @@ The campaigns that fail every I/O call in turn are JUnit tests (StorageFaultsTes
 from fault_injection import FilesystemFaults
 import pytest
 
-pytestmark = pytest.mark.runs_for_minutes
+pytestmark = pytest.mark.runs_for_minutes(2)
 
 
 def test_full_disk_refuses_with_225_and_takes_changes_again_when_space_returns(tmp_path):

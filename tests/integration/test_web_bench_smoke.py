@@ -13,7 +13,7 @@ import sys
 from conftest import release_domain, REPO, reserve_domain
 import pytest
 
-pytestmark = pytest.mark.runs_for_minutes
+pytestmark = pytest.mark.runs_for_minutes(1)
 
 
 def test_the_web_view_benchmark_runs_and_reports_every_figure(tmp_path):

@@ -20,7 +20,7 @@ from playwright.sync_api import expect, sync_playwright
 import pytest
 from web_browser import free_port, launch
 
-pytestmark = pytest.mark.runs_for_minutes
+pytestmark = pytest.mark.runs_for_minutes(1)
 
 ROBOTICS = str(ONTOLOGIES / 'robotics.owl')
 NAMESPACE = '/web_view'
