@@ -2,7 +2,7 @@
 """Benchmark 9 (issue 28), the ontologies robots really use: a cycle per shape and size, through
 the service, every answer checked, the modular reasoners beside the whole-ontology Openllet.
 
-    python bench/real_shapes.py [--smoke] [--shapes c] [--reasoners PELLET] [--baseline-jar JAR]
+    python bench/real_shapes.py [--smoke] [--shapes c] [--sizes 1000] [--reasoners PELLET] [--baseline-jar JAR]
 
 --baseline-jar runs another build of the core (an armor-core.jar with its lib/ beside it, e.g.
 main's core/target) beside this one, each size on both, so a change is measured side by side.
@@ -286,13 +286,15 @@ def _run(node: BenchNode, path: pathlib.Path, shape, reasoner: str, cycles: int,
 
 
 def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, scale: str, shapes: str = 'abcd',
-            reasoners: Optional[List[str]] = None, baseline=None) -> Dict[str, dict]:
+            reasoners: Optional[List[str]] = None, baseline=None,
+            sizes: Optional[List[int]] = None) -> Dict[str, dict]:
     """results[shape][size][reasoner] = one run's figures.
 
     At full scale each run has a node of its own (its memory figure is that run's); the smoke
     scale shares one node, to stay short in make test. `shapes` are the letters to run,
     `reasoners` the names of REASONERS to run (all by default), `baseline` another core snapshot
-    run beside each (its rows are named "... (baseline)").
+    run beside each (its rows are named "... (baseline)"), `sizes` the sizes to run of those the
+    scale has (all by default).
     """
     cores = [('', snapshot)] + ([(' (baseline)', baseline)] if baseline is not None else [])
     chosen = {name: reasoner for name, reasoner in REASONERS.items() if not reasoners or name in reasoners}
@@ -307,6 +309,8 @@ def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, scale: str, shapes: s
             results[label] = {}
             course = label.startswith('(c)')
             for size in (COURSE_SIZES if course else SIZES)[scale]:
+                if sizes and size not in sizes:
+                    continue
                 path = make(size).write(scratch / f'shape_{label[1]}_{size}.ofn')
                 results[label][size] = {}
                 runs = [(name + suffix, reasoner, core) for name, reasoner in chosen.items()
@@ -380,13 +384,14 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
     parser.add_argument('--smoke', action='store_true', help='tiny sizes, a few seconds')
     parser.add_argument('--shapes', default='abcd', help='the shapes to run, by letter (default abcd)')
+    parser.add_argument('--sizes', nargs='*', type=int, help='the sizes to run (default all)')
     parser.add_argument('--reasoners', nargs='*', choices=list(REASONERS), help='the reasoners to run')
     parser.add_argument('--baseline-jar', help='another core build to run beside this one')
     options = parser.parse_args()
     scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
     baseline = _Baseline(options.baseline_jar) if options.baseline_jar else None
     results = measure(scratch, CoreSnapshot(scratch), 'smoke' if options.smoke else 'full',
-                      options.shapes, options.reasoners, baseline)
+                      options.shapes, options.reasoners, baseline, options.sizes)
     print(render(results))
     print('\nWhere a cycle goes (p50 per directive, ms):')
     for label, sizes in results.items():
