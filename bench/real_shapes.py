@@ -366,6 +366,55 @@ def render(results: Dict[str, dict]) -> str:
                     if run['cycles'] else '-',
                     f'{memory:.0f} MiB' if memory else '-',
                     (run['note'] or run['reasoning'])[:160].replace('|', '/')]) + ' |')
+    return ('\n'.join(lines) + '\n\nTargets (issue 28; the best of Openllet and HermiT in modules):\n'
+            + targets(results) + '\n\nWhere a cycle goes (p50 of each directive over ROS 2, ms):\n'
+            + where_cycles_go(results))
+
+
+# Issue 28's targets at a size: cycle p50 (ms) by shape letter; LOAD + first REASON; the core's memory.
+CYCLE_TARGETS_MS = {('a', 10000): 20, ('b', 10000): 20, ('d', 10000): 20, ('c', 1000): 50, ('c', 10000): 200}
+LOAD_TARGET_S = (10000, 10.0)
+MEMORY_TARGET_MIB = (10000, 1024)
+
+
+def targets(results: Dict[str, dict]) -> str:
+    """A line per target: the best modular reasoner's figure against it, met or missed."""
+    lines = []
+    for label, sizes in results.items():
+        for size, runs in sizes.items():
+            modular = {name: run for name, run in runs.items()
+                       if name in ('PELLET', 'HERMIT') and run.get('cycles')}
+            if not modular:
+                continue
+            target = CYCLE_TARGETS_MS.get((label[1], size))
+            if target is not None:
+                name, best = min(((n, _p50(r)) for n, r in modular.items()), key=lambda x: x[1])
+                lines.append(f'- {label}, {size:,}: cycle p50 {best:.1f} ms ({name}), target <= {target} ms: '
+                             + ('met' if best <= target else '**missed**'))
+            if size == LOAD_TARGET_S[0]:
+                name, seconds = min(((n, r['load_s'] + r['first_s']) for n, r in modular.items()),
+                                    key=lambda x: x[1])
+                lines.append(f'- {label}, {size:,}: LOAD + first REASON {seconds:.1f} s ({name}), target <= '
+                             f'{LOAD_TARGET_S[1]:.0f} s: ' + ('met' if seconds <= LOAD_TARGET_S[1] else '**missed**'))
+                peaks = [r.get('memory', {}).get('core', {}).get('peak_mib') for r in modular.values()]
+                peaks = [p for p in peaks if p]
+                if peaks:
+                    lines.append(f'- {label}, {size:,}: core peak {max(peaks):.0f} MiB, target <= '
+                                 f'{MEMORY_TARGET_MIB[1]} MiB: ' + ('met' if max(peaks) <= MEMORY_TARGET_MIB[1]
+                                                                    else '**missed**'))
+    return '\n'.join(lines)
+
+
+def where_cycles_go(results: Dict[str, dict]) -> str:
+    """Per run: the p50 of each directive of the cycle over ROS 2."""
+    lines = []
+    for label, sizes in results.items():
+        for size, runs in sizes.items():
+            for name, run in runs.items():
+                steps = ', '.join(f'{words} {statistics.median(times) * 1000:.1f}'
+                                  for words, times in run.get('steps', {}).items())
+                if steps:
+                    lines.append(f'- {label}, {size:,}, {name}: {steps}')
     return '\n'.join(lines)
 
 
@@ -393,13 +442,8 @@ def main():
     results = measure(scratch, CoreSnapshot(scratch), 'smoke' if options.smoke else 'full',
                       options.shapes, options.reasoners, baseline, options.sizes)
     print(render(results))
-    print('\nWhere a cycle goes (p50 per directive, ms):')
-    for label, sizes in results.items():
-        for size, runs in sizes.items():
-            for name, run in runs.items():
-                steps = ', '.join(f'{words} {statistics.median(times) * 1000:.1f}'
-                                  for words, times in run.get('steps', {}).items())
-                print(f'- {label}, {size:,}, {name}: {steps}')
+    print('\nTargets:\n' + targets(results))
+    print('\nWhere a cycle goes (p50 per directive, ms):\n' + where_cycles_go(results))
 
 
 if __name__ == '__main__':
