@@ -367,7 +367,8 @@ def render(results: Dict[str, dict]) -> str:
                     if run['cycles'] else '-',
                     f'{memory:.0f} MiB' if memory else '-',
                     (run['note'] or run['reasoning'])[:160].replace('|', '/')]) + ' |')
-    return ('\n'.join(lines) + '\n\nTargets (issue 28; the best of Openllet and HermiT in modules):\n'
+    return ('\n'.join(lines) + '\n\nTargets (issue 28, set for a quiet machine; the best of Openllet and '
+            'HermiT in modules, measured under the load average stated above):\n'
             + targets(results) + '\n\nWhere a cycle goes (p50 of each directive over ROS 2, ms):\n'
             + where_cycles_go(results))
 
