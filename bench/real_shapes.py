@@ -2,7 +2,8 @@
 """Benchmark 9 (issue 28), the ontologies robots really use: a cycle per shape and size, through
 the service, every answer checked, the modular reasoners beside the whole-ontology Openllet.
 
-    python bench/real_shapes.py [--smoke] [--shapes c] [--reasoners PELLET] [--baseline-jar JAR]
+    python bench/real_shapes.py [--smoke] [--shapes c] [--sizes 1000] [--reasoners PELLET]
+                                [--baseline-jar JAR]
 
 --baseline-jar runs another build of the core (an armor-core.jar with its lib/ beside it, e.g.
 main's core/target) beside this one, each size on both, so a change is measured side by side.
@@ -286,13 +287,15 @@ def _run(node: BenchNode, path: pathlib.Path, shape, reasoner: str, cycles: int,
 
 
 def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, scale: str, shapes: str = 'abcd',
-            reasoners: Optional[List[str]] = None, baseline=None) -> Dict[str, dict]:
+            reasoners: Optional[List[str]] = None, baseline=None,
+            sizes: Optional[List[int]] = None) -> Dict[str, dict]:
     """results[shape][size][reasoner] = one run's figures.
 
     At full scale each run has a node of its own (its memory figure is that run's); the smoke
     scale shares one node, to stay short in make test. `shapes` are the letters to run,
     `reasoners` the names of REASONERS to run (all by default), `baseline` another core snapshot
-    run beside each (its rows are named "... (baseline)").
+    run beside each (its rows are named "... (baseline)"), `sizes` the sizes to run of those the
+    scale has (all by default).
     """
     cores = [('', snapshot)] + ([(' (baseline)', baseline)] if baseline is not None else [])
     chosen = {name: reasoner for name, reasoner in REASONERS.items() if not reasoners or name in reasoners}
@@ -307,6 +310,8 @@ def measure(scratch: pathlib.Path, snapshot: CoreSnapshot, scale: str, shapes: s
             results[label] = {}
             course = label.startswith('(c)')
             for size in (COURSE_SIZES if course else SIZES)[scale]:
+                if sizes and size not in sizes:
+                    continue
                 path = make(size).write(scratch / f'shape_{label[1]}_{size}.ofn')
                 results[label][size] = {}
                 runs = [(name + suffix, reasoner, core) for name, reasoner in chosen.items()
@@ -362,6 +367,57 @@ def render(results: Dict[str, dict]) -> str:
                     if run['cycles'] else '-',
                     f'{memory:.0f} MiB' if memory else '-',
                     (run['note'] or run['reasoning'])[:160].replace('|', '/')]) + ' |')
+    return ('\n'.join(lines) + '\n\nTargets (issue 28, set for a quiet machine; the best of Openllet and '
+            'HermiT in modules, measured under the load average stated above):\n'
+            + targets(results) + '\n\nWhere a cycle goes (p50 of each directive over ROS 2, ms):\n'
+            + where_cycles_go(results))
+
+
+# Issue 28's targets at a size: cycle p50 (ms) by shape letter; LOAD + first REASON; the core's memory.
+CYCLE_TARGETS_MS = {('a', 10000): 20, ('b', 10000): 20, ('d', 10000): 20, ('c', 1000): 50, ('c', 10000): 200}
+LOAD_TARGET_S = (10000, 10.0)
+MEMORY_TARGET_MIB = (10000, 1024)
+
+
+def targets(results: Dict[str, dict]) -> str:
+    """A line per target: the best modular reasoner's figure against it, met or missed."""
+    lines = []
+    for label, sizes in results.items():
+        for size, runs in sizes.items():
+            modular = {name: run for name, run in runs.items()
+                       if name in ('PELLET', 'HERMIT') and run.get('cycles')}
+            if not modular:
+                continue
+            target = CYCLE_TARGETS_MS.get((label[1], size))
+            if target is not None:
+                name, best = min(((n, _p50(r)) for n, r in modular.items()), key=lambda x: x[1])
+                lines.append(f'- {label}, {size:,}: cycle p50 {best:.1f} ms ({name}), target <= {target} ms: '
+                             + ('met' if best <= target else '**missed**'))
+            if size == LOAD_TARGET_S[0]:
+                name, seconds = min(((n, r['load_s'] + r['first_s']) for n, r in modular.items()),
+                                    key=lambda x: x[1])
+                met = seconds <= LOAD_TARGET_S[1]
+                lines.append(f'- {label}, {size:,}: LOAD + first REASON {seconds:.1f} s ({name}), target '
+                             f'<= {LOAD_TARGET_S[1]:.0f} s: ' + ('met' if met else '**missed**'))
+                peaks = [r.get('memory', {}).get('core', {}).get('peak_mib') for r in modular.values()]
+                peaks = [p for p in peaks if p]
+                if peaks:
+                    met = max(peaks) <= MEMORY_TARGET_MIB[1]
+                    lines.append(f'- {label}, {size:,}: core peak {max(peaks):.0f} MiB, target <= '
+                                 f'{MEMORY_TARGET_MIB[1]} MiB: ' + ('met' if met else '**missed**'))
+    return '\n'.join(lines)
+
+
+def where_cycles_go(results: Dict[str, dict]) -> str:
+    """Per run: the p50 of each directive of the cycle over ROS 2."""
+    lines = []
+    for label, sizes in results.items():
+        for size, runs in sizes.items():
+            for name, run in runs.items():
+                steps = ', '.join(f'{words} {statistics.median(times) * 1000:.1f}'
+                                  for words, times in run.get('steps', {}).items())
+                if steps:
+                    lines.append(f'- {label}, {size:,}, {name}: {steps}')
     return '\n'.join(lines)
 
 
@@ -380,21 +436,17 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
     parser.add_argument('--smoke', action='store_true', help='tiny sizes, a few seconds')
     parser.add_argument('--shapes', default='abcd', help='the shapes to run, by letter (default abcd)')
+    parser.add_argument('--sizes', nargs='*', type=int, help='the sizes to run (default all)')
     parser.add_argument('--reasoners', nargs='*', choices=list(REASONERS), help='the reasoners to run')
     parser.add_argument('--baseline-jar', help='another core build to run beside this one')
     options = parser.parse_args()
     scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
     baseline = _Baseline(options.baseline_jar) if options.baseline_jar else None
     results = measure(scratch, CoreSnapshot(scratch), 'smoke' if options.smoke else 'full',
-                      options.shapes, options.reasoners, baseline)
+                      options.shapes, options.reasoners, baseline, options.sizes)
     print(render(results))
-    print('\nWhere a cycle goes (p50 per directive, ms):')
-    for label, sizes in results.items():
-        for size, runs in sizes.items():
-            for name, run in runs.items():
-                steps = ', '.join(f'{words} {statistics.median(times) * 1000:.1f}'
-                                  for words, times in run.get('steps', {}).items())
-                print(f'- {label}, {size:,}, {name}: {steps}')
+    print('\nTargets:\n' + targets(results))
+    print('\nWhere a cycle goes (p50 per directive, ms):\n' + where_cycles_go(results))
 
 
 if __name__ == '__main__':

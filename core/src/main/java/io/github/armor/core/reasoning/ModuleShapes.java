@@ -22,6 +22,8 @@ import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLIndividual;
 import org.semanticweb.owlapi.model.OWLLiteral;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
+import org.semanticweb.owlapi.model.OWLNaryIndividualAxiom;
+import org.semanticweb.owlapi.model.OWLObjectPropertyAssertionAxiom;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.OWLPropertyAssertionAxiom;
 import org.semanticweb.owlapi.model.OWLSubDataPropertyOfAxiom;
@@ -54,6 +56,10 @@ final class ModuleShapes {
     static final int LARGEST = 64;
     private static final int KEPT = 4096;
     private static final String PLACEHOLDER = "urn:armor:reasoning#individual";
+    // Compiled once: a LOAD checks the literals of every module.
+    private static final java.util.regex.Pattern INTEGER = java.util.regex.Pattern.compile("[+-]?[0-9]+");
+    private static final java.util.regex.Pattern DECIMAL =
+            java.util.regex.Pattern.compile("[+-]?([0-9]+(\\.[0-9]*)?|\\.[0-9]+)");
 
     /** A module's shape, and its members in placeholder order. */
     record Shape(Set<OWLAxiom> key, List<OWLNamedIndividual> order) {}
@@ -115,7 +121,7 @@ final class ModuleShapes {
     /** The module's assertions with the values of blind properties numbered in order of first appearance. */
     private Set<OWLAxiom> valuesRenamed(Set<OWLAxiom> axioms) {
         for (OWLAxiom axiom : axioms) {
-            if (!(axiom instanceof OWLDataPropertyAssertionAxiom) && axiom.dataPropertiesInSignature().findAny().isPresent()) {
+            if (!(axiom instanceof OWLDataPropertyAssertionAxiom) && mentionsDataProperty(axiom)) {
                 return axioms;
             }
         }
@@ -134,15 +140,24 @@ final class ModuleShapes {
         return renamed;
     }
 
+    /** Whether an assertion names a data property (read without building the signatures of the common ones). */
+    private static boolean mentionsDataProperty(OWLAxiom axiom) {
+        if (axiom instanceof OWLClassAssertionAxiom assertion && assertion.getClassExpression().isOWLClass()
+                || axiom instanceof OWLObjectPropertyAssertionAxiom || axiom instanceof OWLNaryIndividualAxiom) {
+            return false;
+        }
+        return axiom.dataPropertiesInSignature().findAny().isPresent();
+    }
+
     private static boolean renameable(OWLLiteral literal) {
         if (literal.hasLang()) {
             return false;
         }
         String text = literal.getLiteral();
         return literal.getDatatype().isString()
-                || literal.getDatatype().isInteger() && text.matches("[+-]?[0-9]+")
+                || literal.getDatatype().isInteger() && INTEGER.matcher(text).matches()
                 || literal.getDatatype().getIRI().equals(OWL2Datatype.XSD_DECIMAL.getIRI())
-                && text.matches("[+-]?([0-9]+(\\.[0-9]*)?|\\.[0-9]+)");
+                && DECIMAL.matcher(text).matches();
     }
 
     /** The shape of a module with these assertions, or null when it is not compared (hub, size, anonymous individuals). */
@@ -152,6 +167,23 @@ final class ModuleShapes {
             return null;
         }
         Set<OWLAxiom> axioms = valuesRenamed(asserted);
+        List<OWLNamedIndividual> order = module.members.size() == 1
+                // Most modules have one individual: there is no order to find.
+                ? module.namedMembers().toList() : orderOfMembers(module, axioms);
+        Map<OWLEntity, IRI> renaming = new HashMap<>();
+        for (int i = 0; i < order.size(); i++) {
+            renaming.put(order.get(i), IRI.create(PLACEHOLDER + i));
+        }
+        OWLObjectDuplicator renamer = new OWLObjectDuplicator(renaming, manager);
+        Set<OWLAxiom> key = new LinkedHashSet<>();
+        for (OWLAxiom axiom : axioms) {
+            key.add(renamer.duplicateObject(axiom));
+        }
+        return new Shape(Set.copyOf(key), List.copyOf(order));
+    }
+
+    /** The module's members ordered by what their assertions say (ties by IRI). */
+    private static List<OWLNamedIndividual> orderOfMembers(Module module, Set<OWLAxiom> axioms) {
         Map<OWLIndividual, List<Long>> roles = new HashMap<>();
         for (OWLAxiom axiom : axioms) {
             List<OWLIndividual> about = AboxLinks.individualsOf(axiom).toList();
@@ -169,16 +201,7 @@ final class ModuleShapes {
         List<OWLNamedIndividual> order = new ArrayList<>(signature.keySet());
         order.sort(Comparator.comparing((OWLNamedIndividual member) -> signature.get(member))
                 .thenComparing(member -> member.getIRI().toString()));
-        Map<OWLEntity, IRI> renaming = new HashMap<>();
-        for (int i = 0; i < order.size(); i++) {
-            renaming.put(order.get(i), IRI.create(PLACEHOLDER + i));
-        }
-        OWLObjectDuplicator renamer = new OWLObjectDuplicator(renaming, manager);
-        Set<OWLAxiom> key = new LinkedHashSet<>();
-        for (OWLAxiom axiom : axioms) {
-            key.add(renamer.duplicateObject(axiom));
-        }
-        return new Shape(Set.copyOf(key), List.copyOf(order));
+        return order;
     }
 
     /** The result for a module whose shape was reasoned on before, or null. */

@@ -39,7 +39,8 @@ import org.slf4j.LoggerFactory;
 /**
  * Serves {@link ArmorCore} on a Unix domain socket. Frames are a 4-byte big-endian length and a
  * UTF-8 JSON object. A request carries an {@code id} the response repeats, so one connection
- * carries many requests at once: each runs on its own worker thread and answers when done.
+ * carries many requests at once: each runs on a thread of its own (the one that read it) and
+ * answers when done.
  *
  * <p>Requests: {@code {"id", "op": "directive", "directive": {...}}},
  * {@code {"id", "op": "list", "directives": [...]}}, {@code {"id", "op": "ping"}}, and the read-only
@@ -84,16 +85,30 @@ public final class CoreServer {
             onReady.run();
             while (true) {
                 SocketChannel connection = server.accept();
-                Thread reader = new Thread(() -> serveConnection(connection), "armor-connection");
-                reader.setDaemon(true);
-                reader.start();
+                // A worker (its large stack): the thread that reads a request also answers it.
+                workers.execute(() -> serveConnection(connection));
             }
         }
     }
 
     private void serveConnection(SocketChannel connection) {
-        Object writeLock = new Object();
-        Consumer<CoreEvent> pushEvent = event -> {
+        Connection served = new Connection(connection);
+        core.events().addListener(served.pushEvent);
+        readAndAnswer(served);
+    }
+
+    /** One client connection: its channel, the lock its frames are written under, its subscriptions. */
+    private final class Connection {
+        final SocketChannel channel;
+        final Object writeLock = new Object();
+        final Set<String> subscribed = ConcurrentHashMap.newKeySet();
+        final Consumer<CoreEvent> pushEvent = this::push;
+
+        Connection(SocketChannel channel) {
+            this.channel = channel;
+        }
+
+        private void push(CoreEvent event) {
             byte[] frame = event.toJson().toString().getBytes(StandardCharsets.UTF_8);
             if (frame.length > SizeLimits.FRAME_BYTES) {
                 LOG.warn("an event of {} bytes is larger than a frame ({}); not sent", frame.length,
@@ -101,36 +116,54 @@ public final class CoreServer {
                 return;
             }
             try {
-                synchronized (writeLock) {
-                    writeFrame(connection, frame);
-                }
+                write(frame);
             } catch (IOException e) {
                 LOG.debug("could not send an event: {}", e.toString());
             }
-        };
-        core.events().addListener(pushEvent);
-        Set<String> subscribed = ConcurrentHashMap.newKeySet();
-        try (connection) {
-            while (true) {
-                JsonObject request = JsonParser.parseString(readFrame(connection)).getAsJsonObject();
-                workers.execute(() -> {
-                    byte[] reply = fitted(request, answer(request, subscribed));
-                    try {
-                        synchronized (writeLock) {
-                            writeFrame(connection, reply);
-                        }
-                    } catch (IOException e) {
-                        LOG.warn("could not send a reply: {}", e.toString());
-                    }
-                });
+        }
+
+        void write(byte[] frame) throws IOException {
+            synchronized (writeLock) {
+                writeFrame(channel, frame);
             }
-        } catch (EOFException e) {
-            LOG.debug("client disconnected");
-        } catch (IOException | RuntimeException e) {
-            LOG.warn("connection closed: {}", e.toString());
-        } finally {
+        }
+
+        void close() {
             core.events().removeListener(pushEvent);
             subscribed.forEach(core.subscriptions()::unsubscribe);
+            try {
+                channel.close();
+            } catch (IOException e) {
+                LOG.debug("closing a connection: {}", e.toString());
+            }
+        }
+    }
+
+    /**
+     * Reads the connection's next request, passes the reading of the one after to a worker, and
+     * answers this one on the thread that read it. Requests still run side by side, but none
+     * waits for a thread to be woken before it starts: on a busy machine each hand-off between
+     * threads costs a wait for a core, paid by every directive.
+     */
+    private void readAndAnswer(Connection served) {
+        JsonObject request;
+        try {
+            request = JsonParser.parseString(readFrame(served.channel)).getAsJsonObject();
+        } catch (EOFException e) {
+            LOG.debug("client disconnected");
+            served.close();
+            return;
+        } catch (IOException | RuntimeException e) {
+            LOG.warn("connection closed: {}", e.toString());
+            served.close();
+            return;
+        }
+        workers.execute(() -> readAndAnswer(served));
+        byte[] reply = fitted(request, answer(request, served.subscribed));
+        try {
+            served.write(reply);
+        } catch (IOException e) {
+            LOG.warn("could not send a reply: {}", e.toString());
         }
     }
 
