@@ -424,7 +424,11 @@ def main():
         differences = fuzzer.differences()
     finally:
         fuzzer.close()
-    print('final: ' + fuzzer.summary(time.monotonic() - started, alive, differences))
+    elapsed = time.monotonic() - started
+    print('final: ' + fuzzer.summary(elapsed, alive, differences))
+    if fuzzer.sent < options.directives:
+        print(f'stopped after {fuzzer.sent} of {options.directives} directives; at this rate the '
+              f'{options.directives} take {options.directives * elapsed / max(fuzzer.sent, 1) / 3600:.1f} h')
     print('exit codes: ' + ', '.join(f'{c}: {n}' for c, n in sorted(fuzzer.codes.items())))
     for words, args in fuzzer.changed_by_rejected[:20]:
         print(f'CHANGED BY A REJECTED DIRECTIVE: {" ".join(words)} {args}')

@@ -1,5 +1,6 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
-"""A short fuzz run in the suite; the full 1,000,000 is `python tests/integration/fuzz.py`."""
+"""A short fuzz run in the suite (two clients at once); the full 1,000,000 is
+`python tests/integration/fuzz.py`."""
 
 import time
 
@@ -7,7 +8,7 @@ from fuzz import Fuzzer
 
 
 def test_malformed_directives_get_defined_codes_and_change_nothing(tmp_path):
-    fuzzer = Fuzzer(tmp_path, seed=3)
+    fuzzer = Fuzzer(tmp_path, seed=3, lanes=2)
     started = time.monotonic()
     try:
         fuzzer.run(1500)

@@ -308,12 +308,15 @@ final class ReferenceStore {
      * came before their records were on the disk, so the list was never acknowledged and its
      * record is cut off like a torn tail; otherwise what is cut is set aside and reported.
      */
-    Recovered withoutRecordsFrom(StateStore.Restorable recovered, int index, boolean inFlight, String why) {
+    synchronized Recovered withoutRecordsFrom(StateStore.Restorable recovered, int index, boolean inFlight, String why) {
         Replayed first = replayed.get(index);
         List<String> problems = new ArrayList<>(recovered.problems());
         long before = index == 0 ? checkpoint.revision() : replayed.get(index - 1).change().revision();
         List<Long> later = journalSeqs.stream().filter(seq -> seq > first.seq()).toList();
         Path file = journalFile(first.seq());
+        // Reopened once the files are cut, so that it appends (and cuts back a failed append) at their new end.
+        close();
+        journal = null;
         if (inFlight && later.isEmpty() && index == replayed.size() - 1) {
             LOG.warn("journal {} of '{}': cut the record of an atomic list a crash interrupted before all its"
                     + " references recorded it (never acknowledged): {}", file.getFileName(), name, why);
