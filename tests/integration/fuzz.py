@@ -194,16 +194,14 @@ class Lane:
         assert answer.success, f'{command} {primary} {secondary}: {answer.error_description}'
         return answer
 
-    def _state_queries(self):
-        return [self.directive('fuzz-state', '', 'GET', 'REF', word, [self.target])
-                for word in ('DIGEST', 'REVISION', 'CLIENT')]
-
     def target_state(self):
         """What a rejected directive must not change: digest, revision, mount holder."""
         # A reasoner the time limit interrupted may hold the reference a while longer: wait it out.
         deadline = time.monotonic() + 900
         while True:
-            answer = self.armor.call_list(self._state_queries(), timeout_s=300)
+            answer = self.armor.call_list([self.directive('fuzz-state', '', 'GET', 'REF', word,
+                                                          [self.target])
+                                           for word in ('DIGEST', 'REVISION', 'CLIENT')], timeout_s=300)
             if answer.success or time.monotonic() > deadline:
                 break
             self.state_waits += 1
@@ -223,9 +221,11 @@ class Lane:
         return self.sacrificial if whole else self.rng.choice(
             [self.target, self.target, self.target, '', 'unknown_ref'])
 
-    def run(self, count: int) -> None:
+    def run(self, count: int, deadline: float = float('inf')) -> None:
         try:
             for _ in range(count):
+                if time.monotonic() > deadline:
+                    return
                 self.step()
         except BaseException as e:  # noqa: BLE001 - the lane's thread reports it to the run
             self.failure = e
@@ -279,7 +279,8 @@ class Lane:
                 self.state = now
         elif acknowledged and not query:
             if touches_target:
-                self.state = self._shadow(sent, then_state=True)
+                self._shadow(sent)
+                self.state = self.target_state()
         elif touches_target:
             self.rejected += 1
             now = self.target_state()
@@ -292,23 +293,16 @@ class Lane:
                 self.state = now
         self.sent += 1
 
-    def _shadow(self, sent, then_state: bool = False):
-        """Replays what the target acknowledged on the shadow; with ``then_state``, reads the
-        target's new state in the same round trip (one list: the replay, then the state)."""
-        replay = []
-        for request in sent:
-            if request.reference_name == self.target:
-                replay.append(type(request)(
-                    client_name=request.client_name, reference_name=self.shadow,
-                    command=request.command, primary_command_spec=request.primary_command_spec,
-                    secondary_command_spec=request.secondary_command_spec, args=list(request.args)))
-        queries = self._state_queries() if then_state else []
-        answer = self.armor.call_list(replay + queries, timeout_s=300)
+    def _shadow(self, sent) -> None:
+        """Replays on the shadow, in one list, what the target acknowledged."""
+        replay = [type(request)(
+            client_name=request.client_name, reference_name=self.shadow, command=request.command,
+            primary_command_spec=request.primary_command_spec,
+            secondary_command_spec=request.secondary_command_spec, args=list(request.args))
+            for request in sent if request.reference_name == self.target]
+        answer = self.armor.call_list(replay, timeout_s=300)
         assert answer.success, (f'a directive that succeeded on target failed on shadow: {replay}: '
                                 f'{[r.error_description for r in answer.armor_responses]}')
-        if then_state:
-            return tuple(tuple(r.queried_objects) for r in answer.armor_responses[len(replay):])
-        return None
 
     def differences(self) -> set:
         """Axioms in one of target and shadow but not the other."""
@@ -340,16 +334,22 @@ class Fuzzer:
         for lane in self.lanes:
             lane.load()
 
-    def run(self, count: int) -> None:
-        """Sends ``count`` directives, shared among the lanes, which run side by side."""
+    def run(self, count: int, deadline: float = float('inf'), progress=None,
+            progress_every_s: float = 60.0) -> None:
+        """Sends ``count`` directives, shared among the lanes, which run side by side (none
+        waits for another) until done or ``deadline`` (time.monotonic()); ``progress`` is called
+        every ``progress_every_s`` meanwhile."""
         shares = [count // len(self.lanes) + (1 if i < count % len(self.lanes) else 0)
                   for i in range(len(self.lanes))]
-        threads = [threading.Thread(target=lane.run, args=(share,), daemon=True)
+        threads = [threading.Thread(target=lane.run, args=(share, deadline), daemon=True)
                    for lane, share in zip(self.lanes, shares)]
         for thread in threads:
             thread.start()
         for thread in threads:
-            thread.join()
+            while thread.is_alive():
+                thread.join(progress_every_s)
+                if progress is not None and thread.is_alive():
+                    progress()
         for lane in self.lanes:
             if lane.failure is not None:
                 raise lane.failure
@@ -408,18 +408,17 @@ def main():
     parser.add_argument('--clients', type=int, default=4,
                         help='clients fuzzing at once, each on references of its own')
     parser.add_argument('--seconds', type=float, default=None,
-                        help='stop after the batch running when this many seconds have passed')
-    parser.add_argument('--progress-every', type=int, default=5_000)
+                        help='stop after this many seconds (each client finishes its directive)')
+    parser.add_argument('--progress-every-s', type=float, default=60.0)
     options = parser.parse_args()
     fuzzer = Fuzzer(pathlib.Path(tempfile.mkdtemp(prefix='armor-fuzz-')), options.seed, options.clients)
     started = time.monotonic()
     try:
-        left = options.directives
-        while left > 0 and (options.seconds is None or time.monotonic() - started < options.seconds):
-            batch = min(left, options.progress_every)
-            fuzzer.run(batch)
-            left -= batch
-            print(fuzzer.summary(time.monotonic() - started, True, set()), flush=True)
+        fuzzer.run(options.directives,
+                   deadline=started + options.seconds if options.seconds else float('inf'),
+                   progress=lambda: print(fuzzer.summary(time.monotonic() - started, True, set()),
+                                          flush=True),
+                   progress_every_s=options.progress_every_s)
         alive = fuzzer.alive()
         differences = fuzzer.differences()
     finally:

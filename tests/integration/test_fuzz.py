@@ -20,7 +20,8 @@ def test_malformed_directives_get_defined_codes_and_change_nothing(tmp_path):
         assert fuzzer.unanswered == 0 and fuzzer.codes.get(216, 0) == 0, fuzzer.codes
         assert fuzzer.changed_by_rejected == []
         assert differences == set()
-        assert fuzzer.rejected > 500 and fuzzer.codes.get(0, 0) > 100, fuzzer.codes
+        # About a third of the directives are rejected on a target, and a third acknowledged.
+        assert fuzzer.rejected > 400 and fuzzer.codes.get(0, 0) > 100, fuzzer.codes
         assert set(fuzzer.kinds) == {'valid', 'almost', 'hostile'}
     finally:
         fuzzer.close()
