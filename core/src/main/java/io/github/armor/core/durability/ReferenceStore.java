@@ -308,7 +308,8 @@ final class ReferenceStore {
      * came before their records were on the disk, so the list was never acknowledged and its
      * record is cut off like a torn tail; otherwise what is cut is set aside and reported.
      */
-    synchronized Recovered withoutRecordsFrom(StateStore.Restorable recovered, int index, boolean inFlight, String why) {
+    synchronized Recovered withoutRecordsFrom(StateStore.Restorable recovered, int index, boolean inFlight,
+                                              String why) {
         Replayed first = replayed.get(index);
         List<String> problems = new ArrayList<>(recovered.problems());
         long before = index == 0 ? checkpoint.revision() : replayed.get(index - 1).change().revision();
