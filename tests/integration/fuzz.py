@@ -1,7 +1,7 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 """Grammar-aware fuzzing over ROS 2: every directive answered with a defined code, none lost.
 
-    python tests/integration/fuzz.py --directives 1000000
+    python tests/integration/fuzz.py --directives 1000000 [--clients 4] [--seconds S]
 
 Directives are built from the core's catalogue (every command, its argument names): valid ones
 (names of the ontology, values of the right type), almost valid ones (one thing wrong: an
@@ -10,7 +10,10 @@ ones (huge or control-character strings, unicode, path traversal, shell and SPAR
 IRIs holding < or >). They go to a reference loaded from robotics.owl; after every rejected
 directive its state (GET REF DIGEST, revision, mount holder) must be what it was. Every
 directive acknowledged there is replayed on a shadow copy; at the end both are saved and must
-hold the same axioms. Commands acting on whole references go to a sacrificial one.
+hold the same axioms. Commands acting on whole references go to a sacrificial one. Several
+clients fuzz at once (--clients), each with a target, shadow and sacrificial reference of its
+own: the core serialises each reference, so a client's state checks see only its own changes,
+and the node's round trips overlap instead of adding up.
 """
 
 import argparse
@@ -19,6 +22,7 @@ import pathlib
 import random
 import sys
 import tempfile
+import threading
 import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
@@ -56,9 +60,10 @@ def load_catalogue():
 class Grammar:
     """Directives from the catalogue: valid, almost valid or hostile, in that proportion."""
 
-    def __init__(self, rng: random.Random, scratch: pathlib.Path):
+    def __init__(self, rng: random.Random, scratch: pathlib.Path, references=('target', 'sacrificial')):
         self.rng = rng
         self.scratch = scratch
+        self.references = references
         self.commands = [c for c in load_catalogue() if c['words'][0]]
 
     def value_for(self, name: str) -> str:
@@ -99,7 +104,7 @@ class Grammar:
         if name in ('ontology IRI', 'URL'):
             return r.choice(['', 'http://www.example.org/robotics', 'http://127.0.0.1:1/x.owl'])
         if name == 'reference name':
-            return r.choice(['target', 'sacrificial', 'nothere'])
+            return r.choice([*self.references, 'nothere'])
         return r.choice(INDIVIDUALS)
 
     def valid(self):
@@ -150,24 +155,20 @@ class Grammar:
         return ('hostile',) + self.hostile()
 
 
-class Fuzzer:
-    def __init__(self, scratch: pathlib.Path, seed: int):
-        from armor_client import ArmorTransport, directive
-        from armor_contract.exit_codes import ExitCode
-        self.defined_codes = {int(code) for code in ExitCode}
-        self.directive = directive
-        self.scratch = scratch
+class Lane:
+    """One client fuzzing its own references (target, shadow, sacrificial) over its own
+    transport, so that lanes run side by side without one's acknowledged changes moving the
+    state another lane checks."""
+
+    def __init__(self, fuzzer: 'Fuzzer', index: int, seed: int):
+        from armor_client import ArmorTransport
+        self.fuzzer = fuzzer
+        self.directive = fuzzer.directive
         self.rng = random.Random(seed)
-        self.grammar = Grammar(self.rng, scratch)
-        # Random axioms can send a reasoner into exponential work: as a deployment facing
-        # untrusted input would, the run bounds reasoning, so such a directive answers 211.
-        self.node = start_node(scratch, '-p', 'reasoner_timeout_ms:=10000',
-                               '-p', 'request_timeout_s:=120.0', namespace='/fuzz')
-        self.armor = ArmorTransport(namespace='/fuzz', service_wait_s=120.0)
-        # Buffered reasoners: a change does not wait for reasoning (REASON in the stream does it).
-        for name in ('target', 'shadow', 'sacrificial'):
-            self._ok(name, 'LOAD', 'FILE', '', str(ONTOLOGIES / 'robotics.owl'),
-                     'http://www.example.org/robotics', 'false', 'PELLET', 'true')
+        self.target, self.shadow, self.sacrificial = (f'{name}{index}' for name in
+                                                      ('target', 'shadow', 'sacrificial'))
+        self.grammar = Grammar(self.rng, fuzzer.scratch, (self.target, self.sacrificial))
+        self.armor = ArmorTransport(namespace=fuzzer.namespace, service_wait_s=120.0)
         self.codes = {}
         self.kinds = {}
         self.undefined = []
@@ -178,6 +179,13 @@ class Fuzzer:
         self.sent = 0
         self.rejected = 0
         self.state_waits = 0
+        self.failure = None
+
+    def load(self) -> None:
+        # Buffered reasoners: a change does not wait for reasoning (REASON in the stream does it).
+        for name in (self.target, self.shadow, self.sacrificial):
+            self._ok(name, 'LOAD', 'FILE', '', str(ONTOLOGIES / 'robotics.owl'),
+                     'http://www.example.org/robotics', 'false', 'PELLET', 'true')
         self.state = self.target_state()
 
     def _ok(self, reference, command, primary, secondary, *args):
@@ -191,7 +199,8 @@ class Fuzzer:
         # A reasoner the time limit interrupted may hold the reference a while longer: wait it out.
         deadline = time.monotonic() + 900
         while True:
-            answer = self.armor.call_list([self.directive('fuzz-state', '', 'GET', 'REF', word, ['target'])
+            answer = self.armor.call_list([self.directive('fuzz-state', '', 'GET', 'REF', word,
+                                                          [self.target])
                                            for word in ('DIGEST', 'REVISION', 'CLIENT')], timeout_s=300)
             if answer.success or time.monotonic() > deadline:
                 break
@@ -207,99 +216,178 @@ class Fuzzer:
             self.unanswered += 1
             return None
 
-    def run(self, count: int) -> None:
-        for _ in range(count):
-            kind, command, words, args = self.grammar.next()
-            self.kinds[kind] = self.kinds.get(kind, 0) + 1
-            whole = command is not None and command['kind'] in WHOLE_REFERENCE_KINDS
-            reference = 'sacrificial' if whole else self.rng.choice(
-                ['target', 'target', 'target', '', 'unknown_ref'])
-            request = self.directive('fuzzer', reference, *words, args)
-            started = time.monotonic()
-            if self.rng.random() < 0.05:
-                _, extra_command, extra_words, extra_args = self.grammar.next()
-                extra_whole = extra_command is not None and extra_command['kind'] in WHOLE_REFERENCE_KINDS
-                second = self.directive('fuzzer', 'sacrificial' if extra_whole else 'target',
-                                        *extra_words, extra_args)
-                try:
-                    answer = self.armor.call_list([request, second], timeout_s=300)
-                except Exception:  # noqa: BLE001 - counted, the run goes on
-                    self.unanswered += 1
-                    continue
-                responses = list(answer.armor_responses)
-                acknowledged = answer.success
-                sent = [request, second]
-            else:
-                response = self._call(request)
-                if response is None:
-                    continue
-                responses = [response]
-                acknowledged = response.success
-                sent = [request]
-            if time.monotonic() - started > 5:
-                self.slow.append((round(time.monotonic() - started, 1), words, args[:4],
-                                  responses[0].exit_code))
-            for response in responses:
-                self.codes[response.exit_code] = self.codes.get(response.exit_code, 0) + 1
-                if response.exit_code not in self.defined_codes:
-                    self.undefined.append((words, args[:3], response.exit_code))
-                    print(f'UNDEFINED EXIT CODE {response.exit_code}: {" ".join(words)} '
-                          f'{[a[:60] for a in args[:4]]}', flush=True)
-            touches_target = any(r.reference_name == 'target' for r in sent)
-            query = command is not None and command['kind'] == 'query' and len(sent) == 1
-            if any(getattr(r, 'timeout', False) for r in responses):
-                # The node stopped waiting ("the directive may still complete"): neither
-                # acknowledged nor rejected. The core serialises the reference, so the state read
-                # next comes after it; a revision that moved means it was applied.
-                self.timed_out += 1
-                if touches_target:
-                    now = self.target_state()
-                    if now[1] != self.state[1]:
-                        for r in sent:
-                            self._shadow(r)
-                    self.state = now
-            elif acknowledged and not query:
-                for r in sent:
-                    self._shadow(r)
-                if touches_target:
-                    self.state = self.target_state()
-            elif touches_target:
-                self.rejected += 1
-                now = self.target_state()
-                if now != self.state:
-                    self.changed_by_rejected.append((words, [a[:40] for a in args[:4]]))
-                    print(f'CHANGED BY A REJECTED DIRECTIVE: {" ".join(words)} '
-                          f'{[a[:60] for a in args[:6]]} -> {[r.exit_code for r in responses]} '
-                          f'{responses[0].error_description[:200]!r}; state {self.state} -> {now}',
-                          flush=True)
-                    self.state = now
-            self.sent += 1
+    def _reference_for(self, command) -> str:
+        whole = command is not None and command['kind'] in WHOLE_REFERENCE_KINDS
+        return self.sacrificial if whole else self.rng.choice(
+            [self.target, self.target, self.target, '', 'unknown_ref'])
 
-    def _shadow(self, request) -> None:
-        if request.reference_name == 'target':
-            request.reference_name = 'shadow'
-            answer = self.armor.call(request, timeout_s=300)
-            request.reference_name = 'target'
-            assert answer.success, f'a directive that succeeded on target failed on shadow: {request}'
+    def run(self, count: int, deadline: float = float('inf')) -> None:
+        try:
+            for _ in range(count):
+                if time.monotonic() > deadline:
+                    return
+                self.step()
+        except BaseException as e:  # noqa: BLE001 - the lane's thread reports it to the run
+            self.failure = e
+            raise
+
+    def step(self) -> None:
+        kind, command, words, args = self.grammar.next()
+        self.kinds[kind] = self.kinds.get(kind, 0) + 1
+        request = self.directive('fuzzer', self._reference_for(command), *words, args)
+        started = time.monotonic()
+        if self.rng.random() < 0.05:
+            _, extra_command, extra_words, extra_args = self.grammar.next()
+            extra_whole = extra_command is not None and extra_command['kind'] in WHOLE_REFERENCE_KINDS
+            second = self.directive('fuzzer', self.sacrificial if extra_whole else self.target,
+                                    *extra_words, extra_args)
+            try:
+                answer = self.armor.call_list([request, second], timeout_s=300)
+            except Exception:  # noqa: BLE001 - counted, the run goes on
+                self.unanswered += 1
+                return
+            responses = list(answer.armor_responses)
+            acknowledged = answer.success
+            sent = [request, second]
+        else:
+            response = self._call(request)
+            if response is None:
+                return
+            responses = [response]
+            acknowledged = response.success
+            sent = [request]
+        if time.monotonic() - started > 5:
+            self.slow.append((round(time.monotonic() - started, 1), words, args[:4],
+                              responses[0].exit_code))
+        for response in responses:
+            self.codes[response.exit_code] = self.codes.get(response.exit_code, 0) + 1
+            if response.exit_code not in self.fuzzer.defined_codes:
+                self.undefined.append((words, args[:3], response.exit_code))
+                print(f'UNDEFINED EXIT CODE {response.exit_code}: {" ".join(words)} '
+                      f'{[a[:60] for a in args[:4]]}', flush=True)
+        touches_target = any(r.reference_name == self.target for r in sent)
+        query = command is not None and command['kind'] == 'query' and len(sent) == 1
+        if any(getattr(r, 'timeout', False) for r in responses):
+            # The node stopped waiting ("the directive may still complete"): neither
+            # acknowledged nor rejected. The core serialises the reference, so the state read
+            # next comes after it; a revision that moved means it was applied.
+            self.timed_out += 1
+            if touches_target:
+                now = self.target_state()
+                if now[1] != self.state[1]:
+                    self._shadow(sent)
+                self.state = now
+        elif acknowledged and not query:
+            if touches_target:
+                self._shadow(sent)
+                self.state = self.target_state()
+        elif touches_target:
+            self.rejected += 1
+            now = self.target_state()
+            if now != self.state:
+                self.changed_by_rejected.append((words, [a[:40] for a in args[:4]]))
+                print(f'CHANGED BY A REJECTED DIRECTIVE: {" ".join(words)} '
+                      f'{[a[:60] for a in args[:6]]} -> {[r.exit_code for r in responses]} '
+                      f'{responses[0].error_description[:200]!r}; state {self.state} -> {now}',
+                      flush=True)
+                self.state = now
+        self.sent += 1
+
+    def _shadow(self, sent) -> None:
+        """Replays on the shadow, in one list, what the target acknowledged."""
+        replay = [type(request)(
+            client_name=request.client_name, reference_name=self.shadow, command=request.command,
+            primary_command_spec=request.primary_command_spec,
+            secondary_command_spec=request.secondary_command_spec, args=list(request.args))
+            for request in sent if request.reference_name == self.target]
+        answer = self.armor.call_list(replay, timeout_s=300)
+        assert answer.success, (f'a directive that succeeded on target failed on shadow: {replay}: '
+                                f'{[r.error_description for r in answer.armor_responses]}')
 
     def differences(self) -> set:
         """Axioms in one of target and shadow but not the other."""
         contents = {}
-        for name in ('target', 'shadow'):
-            path = self.scratch / f'{name}.ofn'
+        for name in (self.target, self.shadow):
+            path = self.fuzzer.scratch / f'{name}.ofn'
             self._ok(name, 'SAVE', '', '', str(path), 'functional')
             contents[name] = {line for line in path.read_text().splitlines()
                               if line and not line.startswith(('Ontology(', 'Prefix(', '#'))}
-        return contents['target'] ^ contents['shadow']
+        return contents[self.target] ^ contents[self.shadow]
+
+
+class Fuzzer:
+    """A node under fuzzing by ``lanes`` clients at once, each on references of its own."""
+
+    def __init__(self, scratch: pathlib.Path, seed: int, lanes: int = 1):
+        from armor_client import ArmorTransport, directive
+        from armor_contract.exit_codes import ExitCode
+        self.defined_codes = {int(code) for code in ExitCode}
+        self.directive = directive
+        self.scratch = scratch
+        self.namespace = '/fuzz'
+        # Random axioms can send a reasoner into exponential work: as a deployment facing
+        # untrusted input would, the run bounds reasoning, so such a directive answers 211.
+        self.node = start_node(scratch, '-p', 'reasoner_timeout_ms:=10000',
+                               '-p', 'request_timeout_s:=120.0', namespace=self.namespace)
+        self.armor = ArmorTransport(namespace=self.namespace, service_wait_s=120.0)
+        self.lanes = [Lane(self, i, seed * 1000 + i) for i in range(lanes)]
+        for lane in self.lanes:
+            lane.load()
+
+    def run(self, count: int, deadline: float = float('inf'), progress=None,
+            progress_every_s: float = 60.0) -> None:
+        """Sends ``count`` directives, shared among the lanes, which run side by side (none
+        waits for another) until done or ``deadline`` (time.monotonic()); ``progress`` is called
+        every ``progress_every_s`` meanwhile."""
+        shares = [count // len(self.lanes) + (1 if i < count % len(self.lanes) else 0)
+                  for i in range(len(self.lanes))]
+        threads = [threading.Thread(target=lane.run, args=(share, deadline), daemon=True)
+                   for lane, share in zip(self.lanes, shares)]
+        for thread in threads:
+            thread.start()
+        for thread in threads:
+            while thread.is_alive():
+                thread.join(progress_every_s)
+                if progress is not None and thread.is_alive():
+                    progress()
+        for lane in self.lanes:
+            if lane.failure is not None:
+                raise lane.failure
+
+    def _total(self, counter: str):
+        values = [getattr(lane, counter) for lane in self.lanes]
+        if isinstance(values[0], dict):
+            total = {}
+            for value in values:
+                for key, n in value.items():
+                    total[key] = total.get(key, 0) + n
+            return total
+        return sum(values, [] if isinstance(values[0], list) else 0)
+
+    codes = property(lambda self: self._total('codes'))
+    kinds = property(lambda self: self._total('kinds'))
+    undefined = property(lambda self: self._total('undefined'))
+    changed_by_rejected = property(lambda self: self._total('changed_by_rejected'))
+    unanswered = property(lambda self: self._total('unanswered'))
+    timed_out = property(lambda self: self._total('timed_out'))
+    slow = property(lambda self: self._total('slow'))
+    sent = property(lambda self: self._total('sent'))
+    rejected = property(lambda self: self._total('rejected'))
+
+    def differences(self) -> set:
+        """Axioms in one lane's target but not in its shadow, or the other way round."""
+        return set().union(*(lane.differences() for lane in self.lanes))
 
     def alive(self) -> bool:
         return self.node.process.poll() is None and self.armor.call(
             self.directive('fuzz', '', 'GET', 'ALL', 'REFS', []), timeout_s=60).success
 
     def summary(self, elapsed_s: float, alive: bool, differences: set) -> str:
+        codes = self.codes
         return (f'{self.sent} directives ({", ".join(f"{k}: {n}" for k, n in sorted(self.kinds.items()))}) '
-                f'in {elapsed_s:.0f} s ({self.sent / max(elapsed_s, 1e-9):.0f}/s); node alive: {alive}; '
-                f'crashes (core restarts, 216): {self.codes.get(216, 0)}; '
+                f'in {elapsed_s:.0f} s ({self.sent / max(elapsed_s, 1e-9):.1f}/s, {len(self.lanes)} '
+                f'clients at once); node alive: {alive}; '
+                f'crashes (core restarts, 216): {codes.get(216, 0)}; '
                 f'answers lost: {self.unanswered}; timed out at the node (applied or not, as the '
                 f'revision said): {self.timed_out}; undefined exit codes: {len(self.undefined)}; '
                 f'rejected on the target: {self.rejected}, of which changed its state: '
@@ -307,6 +395,8 @@ class Fuzzer:
                 f'{len(differences)}')
 
     def close(self) -> None:
+        for lane in self.lanes:
+            lane.armor.close()
         self.armor.close()
         self.node.stop()
 
@@ -315,22 +405,29 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
     parser.add_argument('--directives', type=int, default=1_000_000)
     parser.add_argument('--seed', type=int, default=1)
-    parser.add_argument('--progress-every', type=int, default=50_000)
+    parser.add_argument('--clients', type=int, default=4,
+                        help='clients fuzzing at once, each on references of its own')
+    parser.add_argument('--seconds', type=float, default=None,
+                        help='stop after this many seconds (each client finishes its directive)')
+    parser.add_argument('--progress-every-s', type=float, default=60.0)
     options = parser.parse_args()
-    fuzzer = Fuzzer(pathlib.Path(tempfile.mkdtemp(prefix='armor-fuzz-')), options.seed)
+    fuzzer = Fuzzer(pathlib.Path(tempfile.mkdtemp(prefix='armor-fuzz-')), options.seed, options.clients)
     started = time.monotonic()
     try:
-        left = options.directives
-        while left > 0:
-            batch = min(left, options.progress_every)
-            fuzzer.run(batch)
-            left -= batch
-            print(fuzzer.summary(time.monotonic() - started, True, set()), flush=True)
+        fuzzer.run(options.directives,
+                   deadline=started + options.seconds if options.seconds else float('inf'),
+                   progress=lambda: print(fuzzer.summary(time.monotonic() - started, True, set()),
+                                          flush=True),
+                   progress_every_s=options.progress_every_s)
         alive = fuzzer.alive()
         differences = fuzzer.differences()
     finally:
         fuzzer.close()
-    print('final: ' + fuzzer.summary(time.monotonic() - started, alive, differences))
+    elapsed = time.monotonic() - started
+    print('final: ' + fuzzer.summary(elapsed, alive, differences))
+    if fuzzer.sent < options.directives:
+        print(f'stopped after {fuzzer.sent} of {options.directives} directives; at this rate the '
+              f'{options.directives} take {options.directives * elapsed / max(fuzzer.sent, 1) / 3600:.1f} h')
     print('exit codes: ' + ', '.join(f'{c}: {n}' for c, n in sorted(fuzzer.codes.items())))
     for words, args in fuzzer.changed_by_rejected[:20]:
         print(f'CHANGED BY A REJECTED DIRECTIVE: {" ".join(words)} {args}')

@@ -6,7 +6,7 @@ import json
 import socket
 import urllib.request
 
-from conftest import NS, call_words, first_call_after_start, start_node
+from conftest import NS, ONTOLOGIES, call_words, first_call_after_start, start_node
 import pytest
 
 pytestmark = pytest.mark.runs_for_minutes(1)
@@ -81,6 +81,43 @@ def test_a_damaged_journal_record_is_reported_and_the_changes_before_it_restored
         answer = first_call_after_start(armor, 'robotics', 'QUERY IND CLASS', 'Robot')
         robots = set(answer.queried_objects)
         assert {f'<{NS}bot0>', f'<{NS}bot1>', f'<{NS}bot4>'} <= robots
+    finally:
+        armor.close()
+        node.stop()
+
+
+def test_a_list_over_two_references_a_crash_left_in_one_journal_comes_back_in_neither(tmp_path):
+    """A power cut between the two journal appends of an atomic list leaves its record in the
+    first reference's journal only (the second's was never forced): the list was not
+    acknowledged, and the restore must bring back none of it, without reporting damage."""
+    from armor_client import ArmorTransport, directive
+    node = start_node(tmp_path, namespace='/halflist')
+    armor = ArmorTransport(namespace='/halflist', service_wait_s=120.0)
+    try:
+        assert call_words(armor, 'second', 'LOAD FILE', str(ONTOLOGIES / 'robotics.owl'),
+                          'http://www.example.org/robotics', 'false', 'PELLET', 'true').success
+        assert call_words(armor, 'robotics', 'ADD IND CLASS', 'before', 'Robot').success
+        assert call_words(armor, 'second', 'ADD IND CLASS', 'before', 'Robot').success
+        listed = armor.call_list([directive('test', reference, 'ADD', 'IND', 'CLASS', ['both', 'Robot'])
+                                  for reference in ('robotics', 'second')], timeout_s=120)
+        assert listed.success
+        node.stop()
+        # Cut the list's record off the end of the second reference's journal, as a power cut
+        # before its fsync would have left it.
+        journal = sorted((tmp_path / 'state' / 'refs' / 'second').glob('journal-*.log'))[-1]
+        data = journal.read_bytes()
+        records, at = [], 0
+        while at < len(data):
+            records.append(at)
+            at += 8 + int.from_bytes(data[at:at + 4], 'big')
+        assert len(records) == 2 and b'both' in data[records[-1]:], records
+        journal.write_bytes(data[:records[-1]])
+        node = start_node(tmp_path, namespace='/halflist')
+        for reference in ('robotics', 'second'):
+            robots = set(first_call_after_start(armor, reference, 'QUERY IND CLASS', 'Robot').queried_objects)
+            assert f'<{NS}before>' in robots and f'<{NS}both>' not in robots, (reference, node.log())
+        assert call_words(armor, '', 'GET STATE DAMAGE').queried_objects == []
+        assert 'cut the record of an atomic list' in node.log()
     finally:
         armor.close()
         node.stop()

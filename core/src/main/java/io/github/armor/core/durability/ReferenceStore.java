@@ -76,6 +76,12 @@ final class ReferenceStore {
     private boolean checkpointInFlight;
     // The digest of the class hierarchy last written beside the checkpoint (HierarchySidecar).
     private String hierarchyDigest;
+    // What a restore read from the journals, where each record is and the list it belongs to:
+    // kept until every reference is read, to take out a list not all its references recorded.
+    private List<Replayed> replayed = new ArrayList<>();
+
+    /** A journal record a restore replays: its change, where it starts, and its list (or null). */
+    record Replayed(AcknowledgedChange change, long seq, long offset, ListSpan list) {}
 
     @FunctionalInterface
     interface Repair {
@@ -187,7 +193,7 @@ final class ReferenceStore {
                 throw new Unrestorable(problems);
             }
         }
-        List<AcknowledgedChange> records = new ArrayList<>();
+        List<Replayed> records = new ArrayList<>();
         List<Long> kept = new ArrayList<>();
         boolean broken = false;
         for (long seq : toReplay) {
@@ -214,14 +220,17 @@ final class ReferenceStore {
             kept.add(seq);
             Journal.Contents contents = Journal.parse(bytes);
             int decoded = 0;
+            long offset = 0;
             for (byte[] record : contents.records()) {
                 try {
-                    AcknowledgedChange change = AcknowledgedChange.fromJson(
-                            JsonParser.parseString(new String(record, StandardCharsets.UTF_8)), revision + 1);
+                    JsonElement json = JsonParser.parseString(new String(record, StandardCharsets.UTF_8));
+                    AcknowledgedChange change = AcknowledgedChange.fromJson(json, revision + 1);
+                    ListSpan list = json.isJsonObject() ? ListSpan.fromRecord(json.getAsJsonObject()) : null;
                     dropRefused(records, change, file);
                     revision = change.revision();
-                    records.add(change);
+                    records.add(new Replayed(change, seq, offset, list));
                     decoded++;
+                    offset += 8 + record.length;
                 } catch (RuntimeException e) {
                     break;
                 }
@@ -269,10 +278,81 @@ final class ReferenceStore {
             store.repairs.add(store::writeMeta);
         }
         store.runRepairsQuietly();
-        store.recordsSinceCheckpoint = records.size();
-        return new Recovered(store, store.name, store.settings, meta.get("mounted_by").getAsString(),
-                store.formatClass, ontology, records, revision, historyOf(store.historyInCheckpoint, records),
-                problems, setAside);
+        store.replayed = records;
+        return store.recovered(meta.get("mounted_by").getAsString(), ontology, problems, setAside);
+    }
+
+    /** What is to be replayed of this reference now, with the revision and history it gives. */
+    private Recovered recovered(String mountedBy, OWLOntology ontology, List<String> problems, Path setAside) {
+        List<AcknowledgedChange> records = replayed.stream().map(Replayed::change).toList();
+        long revision = records.isEmpty() ? checkpoint.revision() : records.get(records.size() - 1).revision();
+        recordsSinceCheckpoint = records.size();
+        return new Recovered(this, name, settings, mountedBy, formatClass, ontology, records, revision,
+                historyOf(historyInCheckpoint, records), problems, setAside);
+    }
+
+    /** The journal records a restore read, in order, with their lists. */
+    List<Replayed> replayed() {
+        return replayed;
+    }
+
+    /** The revision the current checkpoint holds: every change up to it is in there, not in a journal. */
+    long checkpointRevision() {
+        return checkpoint.revision();
+    }
+
+    /**
+     * Takes the records from {@code index} on out of a restore, and out of the files: record
+     * {@code index} belongs to an atomic list that not every one of its references recorded.
+     * {@code inFlight}: it is the last record and the others are missing only because a crash
+     * came before their records were on the disk, so the list was never acknowledged and its
+     * record is cut off like a torn tail; otherwise what is cut is set aside and reported.
+     */
+    synchronized Recovered withoutRecordsFrom(StateStore.Restorable recovered, int index, boolean inFlight,
+                                              String why) {
+        Replayed first = replayed.get(index);
+        List<String> problems = new ArrayList<>(recovered.problems());
+        long before = index == 0 ? checkpoint.revision() : replayed.get(index - 1).change().revision();
+        List<Long> later = journalSeqs.stream().filter(seq -> seq > first.seq()).toList();
+        Path file = journalFile(first.seq());
+        // Reopened once the files are cut, so that it appends (and cuts back a failed append) at their new end.
+        close();
+        journal = null;
+        if (inFlight && later.isEmpty() && index == replayed.size() - 1) {
+            LOG.warn("journal {} of '{}': cut the record of an atomic list a crash interrupted before all its"
+                    + " references recorded it (never acknowledged): {}", file.getFileName(), name, why);
+            repairs.add(() -> {
+                try (Storage.Output out = storage.append(file)) {
+                    out.truncate(first.offset());
+                    out.force();
+                }
+            });
+        } else {
+            problems.add(file.getFileName() + ": record at byte " + first.offset() + " " + why + "; it and the "
+                    + (replayed.size() - index) + " record(s) from it on (changes after revision " + before
+                    + ") were not replayed");
+            Path setAside = recovered.setAside();
+            repairs.add(() -> {
+                byte[] intact = Arrays.copyOf(storage.read(file), (int) first.offset());
+                storage.createDirectories(setAside);
+                storage.rename(file, setAside.resolve(file.getFileName()));
+                writeDurably(file, intact);
+            });
+            for (long seq : later) {
+                Path laterFile = journalFile(seq);
+                repairs.add(() -> {
+                    if (Files.exists(laterFile)) {
+                        storage.createDirectories(setAside);
+                        storage.rename(laterFile, setAside.resolve(laterFile.getFileName()));
+                    }
+                });
+            }
+            journalSeqs = new ArrayList<>(journalSeqs.stream().filter(seq -> seq <= first.seq()).toList());
+            repairs.add(this::writeMeta);
+        }
+        replayed = new ArrayList<>(replayed.subList(0, index));
+        runRepairsQuietly();
+        return recovered(recovered.mountedBy(), recovered.ontology(), problems, recovered.setAside());
     }
 
     /**
@@ -281,9 +361,9 @@ final class ReferenceStore {
      * the same revision, so a record followed by one of the same or a lower revision was refused:
      * it is dropped here.
      */
-    private static void dropRefused(List<AcknowledgedChange> records, AcknowledgedChange next, Path file) {
-        while (!records.isEmpty() && records.get(records.size() - 1).revision() >= next.revision()) {
-            AcknowledgedChange refused = records.remove(records.size() - 1);
+    private static void dropRefused(List<Replayed> records, AcknowledgedChange next, Path file) {
+        while (!records.isEmpty() && records.get(records.size() - 1).change().revision() >= next.revision()) {
+            AcknowledgedChange refused = records.remove(records.size() - 1).change();
             LOG.warn("{}: dropped the record of revision {}, refused when it was written (a later record has the"
                     + " same revision)", file.getFileName(), refused.revision());
         }
@@ -393,9 +473,13 @@ final class ReferenceStore {
      * and the reference's revision once they are applied. When it throws, nothing of the record
      * stays in the journal.
      */
-    synchronized void record(AcknowledgedChange change) throws IOException {
+    synchronized void record(AcknowledgedChange change, ListSpan list) throws IOException {
         runRepairs();
-        journal.append(change.toJson().toString().getBytes(StandardCharsets.UTF_8));
+        JsonObject json = change.toJson();
+        if (list != null) {
+            json.add("list", list.toJson());
+        }
+        journal.append(json.toString().getBytes(StandardCharsets.UTF_8));
         recordsSinceCheckpoint++;
     }
 

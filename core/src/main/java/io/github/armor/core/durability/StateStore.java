@@ -96,8 +96,7 @@ public final class StateStore {
                         ReferenceStore.Recovered r = ReferenceStore.recover(storage, dir, durability,
                                 (checkpoint, settings, formatClass) -> restoreFormat(files.loadTrusted(checkpoint,
                                         importsDir(settings)), formatClass), setAside);
-                        found.add(new Restorable(r.name(), r.ontology(), r.settings(), r.mountedBy(), r.records(),
-                                r.revision(), r.store(), r.history(), r.problems(), setAside));
+                        found.add(restorable(r));
                     } catch (ReferenceStore.Unfinished e) {
                         LOG.info("{}: {}; deleted", dir, e.getMessage());
                         deleteTree(dir);
@@ -117,7 +116,12 @@ public final class StateStore {
         } catch (IOException e) {
             throw new IllegalStateException("state directory " + refsDir + " is unusable: " + e, e);
         }
-        return found;
+        return IncompleteLists.takenOut(found);
+    }
+
+    static Restorable restorable(ReferenceStore.Recovered r) {
+        return new Restorable(r.name(), r.ontology(), r.settings(), r.mountedBy(), r.records(), r.revision(),
+                r.store(), r.history(), r.problems(), r.setAside());
     }
 
     private static Path importsDir(Reference.Settings settings) {
@@ -218,13 +222,13 @@ public final class StateStore {
      * Records acknowledged directives with the revision they give the reference; on failure the
      * caller must undo them (nothing was acknowledged).
      */
-    public void record(Reference reference, AcknowledgedChange change) {
+    private void record(Reference reference, AcknowledgedChange change, ListSpan list) {
         ReferenceStore store = stores.get(reference.name());
         if (store == null) {
             throw new ArmorException(ExitCode.INTERNAL_ERROR, "reference '" + reference.name() + "' has no journal");
         }
         try {
-            store.record(change);
+            store.record(change, list);
             damage.accepting(reference.name());
         } catch (IOException e) {
             damage.refusing(reference.name(), e.getMessage() == null ? e.toString() : e.getMessage());
@@ -234,13 +238,18 @@ public final class StateStore {
 
     /**
      * Records one change on each of several references (an atomic list): all or none. When one
-     * cannot be written, those already written are taken back out of their journals.
+     * cannot be written, those already written are taken back out of their journals. Each record
+     * of a list over several references names the list and all of them, so that a crash between
+     * two of its records restores none of it (IncompleteLists).
      */
     public void recordAll(Map<Reference, AcknowledgedChange> changes) {
         List<Reference> written = new ArrayList<>();
+        Map<String, Long> revisions = new java.util.LinkedHashMap<>();
+        changes.forEach((reference, change) -> revisions.put(reference.name(), change.revision()));
+        ListSpan list = changes.size() > 1 ? ListSpan.fresh(revisions) : null;
         try {
             for (Map.Entry<Reference, AcknowledgedChange> change : changes.entrySet()) {
-                record(change.getKey(), change.getValue());
+                record(change.getKey(), change.getValue(), list);
                 written.add(change.getKey());
             }
         } catch (ArmorException e) {
