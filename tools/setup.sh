@@ -347,7 +347,9 @@ step_scenes() {
     # No stale files from removed interfaces (only paths inside the venv are touched).
     grep "^$VENV/" "$build/install_manifest.txt" | while IFS= read -r f; do rm -f "$f"; done
   fi
-  logged make -C "$build" install
+  # Under the pip lock: a pip run of another step that lists the venv while this writes
+  # its egg-info read a half-written one ("Invalid version: None") and failed.
+  logged flock "$BUILD/.pip.lock" make -C "$build" install
   venv_pip install --no-deps --no-build-isolation --config-settings editable_mode=compat -e sit_armor_injected
   done_in "$hash" "built"
 }
