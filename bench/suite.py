@@ -17,6 +17,10 @@ Section 11 stops each reasoner's run at its budget (bench/soma.py BUDGET_S, WHOL
 up to about 80 minutes for 100 and 1,000 individuals; 10,000 is `python bench/soma.py --sizes
 10000`.
 
+`--sections 9,12` reruns only the named sections and rewrites only them in an existing report
+(sections 1 to 7 share the summary, so any of them reruns all seven). Sections 8 to 12 each say
+when, at which commit and under which load they were measured.
+
 Every figure stands on checked answers (bench/answers.py): a benchmark stops at a wrong answer
 of ARMOR's, or records it where it also measures alternatives; the suite then writes the report
 and fails, naming each ARMOR figure whose answers were wrong.
@@ -28,10 +32,12 @@ import json
 import os
 import pathlib
 import platform
+import re
 import subprocess
 import sys
 import tempfile
 import time
+from typing import Callable, Dict, List, NamedTuple, Optional, Tuple
 
 from answers import wrong_in
 from harness import REPO, SCALES, CoreSnapshot
@@ -85,21 +91,77 @@ def versions(snapshot: CoreSnapshot) -> dict:
     return found
 
 
-def run(scale_name: str, report_path: pathlib.Path) -> dict:
-    """Runs every benchmark, writes the report, and returns the raw results."""
-    scale = SCALES[scale_name]
-    started = time.monotonic()
-    scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
-    snapshot = CoreSnapshot(scratch)
-    results = {'scale': scale_name,
-               'date': datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d %H:%M UTC'),
-               'commit': _command_output('git', '-C', str(REPO), 'describe', '--always',
-                                         '--dirty'),
-               'machine': machine(), 'versions': versions(snapshot)}
+class Section(NamedTuple):
+    """A section that renders from its own results alone, so it can be rerun by itself."""
+    number: int
+    heading: str
+    key: str
+    measure: Callable[[pathlib.Path, CoreSnapshot, str], object]
+    render: Callable[[object], str]
+    scales: Tuple[str, ...] = ('full', 'smoke')
 
-    def stage(name):
-        print(f'[bench {time.monotonic() - started:6.0f} s] {name}', file=sys.stderr, flush=True)
 
+def _real_shapes_text(results) -> str:
+    return (real_shapes.__doc__.split('\n\n', 2)[2].strip() + '\n\n'
+            + real_shapes.render(results))
+
+
+# Rendered together by report.render, with the title, the summary and the machine.
+JOINT_SECTIONS = (1, 2, 3, 4, 5, 6, 7)
+STANDALONE_SECTIONS = (
+    Section(8, 'Plain rclpy clients with the default QoS (issue 20)', 'default_clients',
+            lambda scratch, snapshot, scale: default_clients.measure(
+                scratch, snapshot, **default_clients.SUITE_SIZES[scale]),
+            default_clients.render),
+    Section(9, 'The ontologies robots really use (issue 28)', 'real_shapes',
+            real_shapes.measure, _real_shapes_text),
+    Section(10, 'Scenes by demonstration (issue 32)', 'scenes', scenes.measure, scenes.render,
+            scales=('full',)),
+    Section(11, "KnowRob's upper ontology, SOMA and DUL (issue 36)", 'soma',
+            lambda scratch, snapshot, scale: soma.measure(scratch, snapshot, scale,
+                                                          sizes=[100, 1000]),
+            soma.render, scales=('full',)),
+    Section(12, 'Explanations: time to the first justification (issue 31)', 'explanations',
+            lambda scratch, snapshot, scale: explanations.measure(
+                scratch, snapshot, 'full' if scale == 'full' else 'smoke'),
+            explanations.render),
+)
+
+
+def _standalone_text(section: Section, results, provenance: str) -> str:
+    return (f'## {section.number}. {section.heading}\n\n{provenance}'
+            f'{section.render(results).strip()}\n')
+
+
+def _replace_sections(report_text: str, texts: Dict[int, str], head: Optional[str] = None) -> str:
+    """The report with each numbered section in texts put in place of the old one (or added in
+    number order when the report has none yet), every other section kept as it was; with head,
+    the title, summary and sections 1 to 7 (rendered together) replaced by it."""
+    parts = re.split(r'(?m)^(?=## )', report_text)
+
+    def number(part):
+        found = re.match(r'## (\d+)\. ', part)
+        return int(found.group(1)) if found else None
+
+    if head is not None:
+        parts = re.split(r'(?m)^(?=## )', head) + [
+            part for part in parts[1:] if (number(part) or 0) > JOINT_SECTIONS[-1]]
+    kept = [part for part in parts[1:] if number(part) not in texts]
+    for wanted, text in sorted(texts.items()):
+        at = next((i for i, part in enumerate(kept)
+                   if number(part) is not None and number(part) > wanted), len(kept))
+        kept.insert(at, text)
+    return '\n\n'.join(part.strip('\n') for part in [parts[0]] + kept) + '\n'
+
+
+def _commit() -> str:
+    return _command_output('git', '-C', str(REPO), 'describe', '--always', '--dirty')
+
+
+def _measure_joint(scale, scratch: pathlib.Path, snapshot: CoreSnapshot, stage) -> dict:
+    """Sections 1 to 7: measured and rendered together (the summary and the recommended
+    reasoner draw on all of them)."""
+    results = {}
     stage('1. transport overhead')
     results['transport'] = {'calls': scale.latency_calls,
                             **query_latency.measure(scale.latency_calls, scratch, snapshot)}
@@ -110,7 +172,7 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
     results['reasoning'] = reasoning_cycle.measure(
         scale.abox_sizes, scale.cycles, scale.cycle_budget_s, scale.owlready_budget_s, scratch,
         snapshot)
-    stage('6. reasoning at robot speed (issue 15)')
+    stage('7. reasoning at robot speed (issue 15)')
     results['robot_speed'] = {
         'large_individuals': scale.large_abox, 'busy_individuals': scale.busy_abox,
         'large': robot_speed.measure_large(scratch, snapshot, scale.large_abox, scale.cycles,
@@ -140,34 +202,59 @@ def run(scale_name: str, report_path: pathlib.Path) -> dict:
             with_reason, scale.profile_s),
     }
     stage('6. SPARQL on LUBM')
-    results['lubm'] = lubm.measure(lubm.SCALES[scale_name], scratch, snapshot)
-    stage('8. plain rclpy clients with the default QoS (issue 20)')
-    results['default_clients'] = default_clients.measure(
-        scratch, snapshot, **default_clients.SUITE_SIZES[scale_name])
-    stage('9. the ontologies robots really use (issue 28)')
-    results['real_shapes'] = real_shapes.measure(scratch, snapshot, scale_name)
-    if scale_name == 'full':
-        stage('10. scenes by demonstration (issue 32)')
-        results['scenes'] = scenes.measure(scratch, snapshot, scale_name)
-        stage("11. KnowRob's upper ontology, SOMA and DUL (issue 36)")
-        results['soma'] = soma.measure(scratch, snapshot, scale_name, sizes=[100, 1000])
-    stage('12. explanations: time to the first justification (issue 31)')
-    results['explanations'] = explanations.measure(scratch, snapshot,
-                                                   'full' if scale_name == 'full' else 'smoke')
-    results['duration_s'] = time.monotonic() - started
+    results['lubm'] = lubm.measure(lubm.SCALES[scale.name], scratch, snapshot)
+    return results
+
+
+def run(scale_name: str, report_path: pathlib.Path,
+        sections: Optional[List[int]] = None) -> dict:
+    """Runs the benchmarks (all, or the numbered sections: any of 1 to 7 reruns those seven
+    together), writes or rewrites the report, and returns the raw results."""
+    scale = SCALES[scale_name]
+    numbers = set(sections) if sections else None
+    known = set(JOINT_SECTIONS) | {section.number for section in STANDALONE_SECTIONS}
+    if numbers and not numbers <= known:
+        sys.exit(f'--sections: no section {sorted(numbers - known)}')
+    joint = numbers is None or bool(numbers & set(JOINT_SECTIONS))
+    standalone = [section for section in STANDALONE_SECTIONS
+                  if (section.number in numbers if numbers else scale_name in section.scales)]
+    for section in standalone:
+        if scale_name not in section.scales:
+            sys.exit(f'--sections: section {section.number} runs at scale '
+                     + ' or '.join(section.scales) + ' only')
+    started = time.monotonic()
+    scratch = pathlib.Path(tempfile.mkdtemp(prefix='armor-bench-'))
+    snapshot = CoreSnapshot(scratch)
+    results = {'scale': scale_name,
+               'date': datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d %H:%M UTC'),
+               'commit': _commit(), 'machine': machine(), 'versions': versions(snapshot)}
+
+    def stage(name):
+        print(f'[bench {time.monotonic() - started:6.0f} s] {name}', file=sys.stderr, flush=True)
+
+    if joint:
+        results.update(_measure_joint(scale, scratch, snapshot, stage))
+        results['duration_s'] = time.monotonic() - started
+    texts = {}
+    for section in standalone:
+        section_started = time.monotonic()
+        load = ', '.join(f'{value:.2f}' for value in os.getloadavg())
+        stage(f'{section.number}. {section.heading}')
+        results[section.key] = section.measure(scratch, snapshot, scale_name)
+        provenance = (
+            f'*Measured by `python bench/suite.py --sections {section.number}` or `make bench` '
+            f'(scale `{scale_name}`) on '
+            f'{datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC, commit '
+            f'`{results["commit"]}`, in {(time.monotonic() - section_started) / 60:.1f} minutes; '
+            f'load average at its start {load}.*\n\n')
+        texts[section.number] = _standalone_text(section, results[section.key], provenance)
     (scratch / 'results.json').write_text(json.dumps(results, indent=2, default=str))
-    report_path.write_text(report.render(results) + '\n\n'
-                           + '## 8. Plain rclpy clients with the default QoS (issue 20)\n\n'
-                           + default_clients.render(results['default_clients']) + '\n\n'
-                           + '## 9. The ontologies robots really use (issue 28)\n\n'
-                           + real_shapes.__doc__.split('\n\n', 2)[2].strip() + '\n\n'
-                           + real_shapes.render(results['real_shapes']) + '\n'
-                           + ('\n## 10. Scenes by demonstration (issue 32)\n\n'
-                              + scenes.render(results['scenes']) if 'scenes' in results else '')
-                           + ("\n\n## 11. KnowRob's upper ontology, SOMA and DUL (issue 36)\n\n"
-                              + soma.render(results['soma']) if 'soma' in results else '')
-                           + '\n\n## 12. Explanations: time to the first justification (issue 31)\n\n'
-                           + explanations.render(results['explanations']) + '\n')
+    head = report.render(results) if joint else None
+    if numbers is None or not report_path.exists():
+        old = head or '# ARMOR for ROS 2: benchmark report\n'
+    else:
+        old = report_path.read_text()
+    report_path.write_text(_replace_sections(old, texts, head))
     stage(f'report written to {report_path} (raw figures: {scratch / "results.json"})')
     return results
 
@@ -177,8 +264,11 @@ def main():
     parser.add_argument('--scale', choices=sorted(SCALES),
                         default=os.environ.get('ARMOR_BENCH_SCALE', 'full'))
     parser.add_argument('--report', type=pathlib.Path, default=REPO / 'bench' / 'REPORT.md')
+    parser.add_argument('--sections', type=lambda text: [int(n) for n in text.split(',')],
+                        help='comma-separated section numbers: run only these and rewrite only '
+                             'them in the report (any of 1 to 7 reruns those seven together)')
     options = parser.parse_args()
-    wrong = wrong_in(run(options.scale, options.report))
+    wrong = wrong_in(run(options.scale, options.report, options.sections))
     if wrong:
         sys.exit('wrong answers behind these figures:\n  ' + '\n  '.join(wrong))
     print('every checked answer was right', file=sys.stderr)

@@ -15,10 +15,10 @@ from armor_client import commands
 from armor_client.errors import ArmorCallTimeout, ArmorServiceCallError
 from armor_client.paths import absolute_args
 from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
+from armor_contract.spinning import spin_while
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 import rclpy
-from rclpy.exceptions import InvalidHandle
 from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
 
@@ -123,17 +123,9 @@ class ArmorTransport:
         self.close()
 
     def _spin(self) -> None:
-        """The executor's loop, kept alive when an entity of the node is destroyed under it.
-
-        rclpy raises InvalidHandle out of spin when a client, subscription or event handler of
-        this node (the caller may add its own) is destroyed while the executor builds its wait
-        set: the thread would end, and every later call would wait for an answer nobody takes in.
-        """
-        while not self._closing.is_set() and rclpy.ok(context=self.node.context):
-            try:
-                self._executor.spin_once(timeout_sec=0.5)
-            except InvalidHandle:
-                continue
+        spin_while(self._executor,
+                   lambda: not self._closing.is_set() and rclpy.ok(context=self.node.context),
+                   timeout_s=0.5)
 
     def _call(self, client, message, timeout_s):
         if client.srv_name not in self._ready:

@@ -16,6 +16,7 @@ import sys
 from armor_contract.events import CHANGE_QOS, CHANGE_TOPIC
 from armor_contract.exit_codes import ExitCode
 from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
+from armor_contract.spinning import spin_while
 from armor_msgs.msg import ArmorChange
 from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
 from armor_service import core_ops, wire
@@ -28,7 +29,7 @@ from armor_service.subscriptions import SubscriptionTopics
 import rclpy
 from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
-from rclpy.exceptions import InvalidHandle, InvalidParameterTypeException
+from rclpy.exceptions import InvalidParameterTypeException
 from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions
 
@@ -295,13 +296,7 @@ def main(args=None, on_ready=None):
             on_ready(node)
         executor = MultiThreadedExecutor(num_threads=node.get_parameter('executor_threads').value)
         executor.add_node(node)
-        while rclpy.ok():
-            try:
-                executor.spin_once(timeout_sec=1.0)
-            except InvalidHandle:
-                # A publisher (and its event handler) that the subscription sweep destroyed
-                # while the executor built its wait set: rclpy raises out of spin for it.
-                continue
+        spin_while(executor, rclpy.ok, timeout_s=1.0)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     except (RuntimeError, CoreUnavailable) as error:

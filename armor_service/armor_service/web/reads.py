@@ -127,27 +127,35 @@ class SharedAnswers:
     async def _fetch(self, key: Hashable, version: Any, fetch: Callable[[], Awaitable[Any]],
                      reference: Optional[str], on_demand: bool) -> bytes:
         if reference is None:
-            body = json.dumps(await fetch(), ensure_ascii=False).encode('utf-8')
-        elif on_demand:
-            async with self._turns.setdefault(reference, asyncio.Lock()):
-                body = json.dumps(await fetch(), ensure_ascii=False).encode('utf-8')
+            body = await self._encoded(fetch)
         else:
             async with self._turns.setdefault(reference, asyncio.Lock()):
-                ended, took = self._last_fetch.get(reference, (0.0, 0.0))
-                pause = ended + (BUSY_SHARE_INVERSE - 1) * took - time.monotonic()
-                if pause > 0:
-                    await asyncio.sleep(pause)
-                started = time.monotonic()
-                try:
-                    body = json.dumps(await fetch(), ensure_ascii=False).encode('utf-8')
-                finally:
-                    ended = time.monotonic()
-                    self._last_fetch[reference] = (ended, ended - started)
+                if on_demand:
+                    body = await self._encoded(fetch)
+                else:
+                    body = await self._in_turn(reference, fetch)
         self._entries[key] = (version, time.monotonic(), body)
         self._entries.move_to_end(key)
         while len(self._entries) > self._limit:
             self._entries.popitem(last=False)
         return body
+
+    @staticmethod
+    async def _encoded(fetch: Callable[[], Awaitable[Any]]) -> bytes:
+        return json.dumps(await fetch(), ensure_ascii=False).encode('utf-8')
+
+    async def _in_turn(self, reference: str, fetch: Callable[[], Awaitable[Any]]) -> bytes:
+        """A periodic read: after the pause the previous one set, then setting the next."""
+        ended, took = self._last_fetch.get(reference, (0.0, 0.0))
+        pause = ended + (BUSY_SHARE_INVERSE - 1) * took - time.monotonic()
+        if pause > 0:
+            await asyncio.sleep(pause)
+        started = time.monotonic()
+        try:
+            return await self._encoded(fetch)
+        finally:
+            ended = time.monotonic()
+            self._last_fetch[reference] = (ended, ended - started)
 
 
 __all__ = ['CoreReads', 'CoreUnavailable', 'SharedAnswers', 'ViewFailed', 'WEB_CLIENT']
