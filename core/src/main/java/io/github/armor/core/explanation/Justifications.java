@@ -34,6 +34,7 @@ import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.model.AxiomType;
 import org.semanticweb.owlapi.model.OWLAxiom;
 import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLIndividual;
 import org.semanticweb.owlapi.model.OWLIndividualAxiom;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
@@ -42,6 +43,8 @@ import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.OWLPrimitive;
 import org.semanticweb.owlapi.model.parameters.Imports;
 import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
+import uk.ac.manchester.cs.owlapi.modularity.ModuleType;
+import uk.ac.manchester.cs.owlapi.modularity.SyntacticLocalityModuleExtractor;
 
 /**
  * Finds justifications (minimal sets of the ontology's axioms that entail a fact) with the OWL
@@ -94,7 +97,7 @@ final class Justifications {
         Found found = null;
         int searched = -1;
         for (int radius : individuals.isEmpty() ? new int[] {UNBOUNDED} : RADII) {
-            Set<OWLAxiom> module = module(fact, schema,
+            Set<OWLAxiom> module = module(search.manager, fact, schema,
                     connectedAssertions(ontology, individuals, radius));
             if (module.size() == searched) {
                 continue; // the part did not grow: nothing new to search
@@ -143,11 +146,15 @@ final class Justifications {
      * The part of the ontology searched first: the schema and some assertions, cut down to the
      * STAR module of the fact's signature in them.
      */
-    private static Set<OWLAxiom> module(OWLAxiom fact, Set<OWLAxiom> schema, Set<OWLAxiom> assertions) {
+    private static Set<OWLAxiom> module(OWLOntologyManager manager, OWLAxiom fact, Set<OWLAxiom> schema,
+                                        Set<OWLAxiom> assertions) {
         Set<OWLAxiom> candidates = new LinkedHashSet<>(schema);
         candidates.addAll(assertions);
-        return Modules.star(candidates, fact.signature().collect(Collectors.toSet())).stream()
-                .filter(OWLAxiom::isLogicalAxiom).collect(Collectors.toCollection(LinkedHashSet::new));
+        Set<OWLEntity> signature = fact.signature().collect(Collectors.toSet());
+        SyntacticLocalityModuleExtractor extractor = new SyntacticLocalityModuleExtractor(manager,
+                candidates.stream(), ModuleType.STAR);
+        return extractor.extract(signature).stream().filter(OWLAxiom::isLogicalAxiom)
+                .collect(Collectors.toCollection(LinkedHashSet::new));
     }
 
     /**

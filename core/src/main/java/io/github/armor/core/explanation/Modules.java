@@ -11,8 +11,9 @@ import org.semanticweb.owlapi.modularity.locality.SyntacticLocalityModuleExtract
 /**
  * Syntactic locality (STAR) modules of sets of axioms, with the OWL API's extractor that reads the
  * axioms as they are: its older one (uk.ac.manchester.cs.owlapi.modularity) first copies them into
- * a new ontology (and the library's, into a new ontology manager), on each of the twenty or so
- * small sets of a search.
+ * a new ontology, on each of the twenty or so small sets a search checks. (The search's first
+ * module and the library's keep the older extractor: the order of the axioms it returns decides
+ * which justification the library finds first, and tests and users expect that one.)
  */
 final class Modules {
     private Modules() {}

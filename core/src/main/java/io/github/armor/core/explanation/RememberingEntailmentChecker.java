@@ -233,10 +233,9 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
         return library.getSeedSignature();
     }
 
-    /** The library's module (STAR, of the fact's signature), without the ontology manager it makes for each. */
     @Override
     public Set<OWLAxiom> getModule(Set<OWLAxiom> axioms) {
-        return axioms.isEmpty() ? Set.of() : Modules.star(axioms, signature);
+        return library.getModule(axioms);
     }
 
     @Override
