@@ -80,6 +80,10 @@ def wrong_in(results: dict) -> List[str]:
             if audit.get(key):
                 wrong.append(f'8. default clients, {run}: {audit[key]} {key.replace("_", " ")} '
                              'after the recovery')
+    for row in results.get('explanations', {}).get('rows', []):
+        for problem in row.get('wrong', []):
+            wrong.append(f'12. explanations, {row["map"]}, {row["individuals"] or "TBox"}, {row["kind"]}: '
+                         f'{problem}')
     for individuals, by_reasoner in results.get('soma', {}).items():
         for reasoner, entry in by_reasoner.items():
             if entry['modular'].get('wrong'):

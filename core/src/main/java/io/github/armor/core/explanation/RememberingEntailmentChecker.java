@@ -1,6 +1,7 @@
 // Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 package io.github.armor.core.explanation;
 
+import java.lang.reflect.Proxy;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashSet;
@@ -12,6 +13,9 @@ import org.semanticweb.HermiT.ReasonerFactory;
 import org.semanticweb.owl.explanation.impl.blackbox.EntailmentChecker;
 import org.semanticweb.owl.explanation.impl.blackbox.EntailmentCheckerFactory;
 import org.semanticweb.owlapi.model.OWLAxiom;
+import org.semanticweb.owlapi.model.OWLClassAssertionAxiom;
+import org.semanticweb.owlapi.model.OWLDataFactory;
+import org.semanticweb.owlapi.model.OWLObjectPropertyAssertionAxiom;
 import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owl.explanation.impl.blackbox.checker.SatisfiabilityEntailmentCheckerFactory;
 import org.semanticweb.owlapi.model.OWLOntology;
@@ -25,8 +29,6 @@ import org.semanticweb.owlapi.reasoner.OWLReasoner;
 import org.semanticweb.owlapi.reasoner.OWLReasonerConfiguration;
 import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
 import org.semanticweb.owlapi.reasoner.SimpleConfiguration;
-import uk.ac.manchester.cs.owlapi.modularity.ModuleType;
-import uk.ac.manchester.cs.owlapi.modularity.SyntacticLocalityModuleExtractor;
 
 /**
  * Asks the reasoner only what the checks before cannot answer. The explanation library's search
@@ -48,6 +50,11 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
             FreshEntityPolicy.ALLOW, Long.MAX_VALUE, IndividualNodeSetPolicy.BY_SAME_AS);
     // The library's checker: the signature, the module, and the check (but HermiT's, see askHermiT).
     private final EntailmentChecker<OWLAxiom> library;
+    // The library's checker again, on a reasoner that answers what this checker found.
+    private final EntailmentChecker<OWLAxiom> replaying;
+    private final KnownAnswer knownAnswer = new KnownAnswer();
+    // What HermiT checks instead of the fact where that is one tableau (askHermiT), else null.
+    private final OWLAxiom negation;
     private final OWLOntologyManager manager;
     private final Set<OWLEntity> signature;
     private final Memory memory;
@@ -64,6 +71,9 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
         this.manager = manager;
         this.memory = memory;
         this.signature = library.getEntailmentSignature();
+        this.negation = negation(library.getEntailment(), manager.getOWLDataFactory());
+        this.replaying = new SatisfiabilityEntailmentCheckerFactory(knownAnswer, () -> manager)
+                .createEntailementChecker(library.getEntailment());
     }
 
     /**
@@ -84,16 +94,15 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
         if (axioms.contains(library.getEntailment())) {
             return true;
         }
-        Set<OWLAxiom> module = module(axioms);
-        for (Set<OWLAxiom> known : memory.entailing()) {
-            if (module.containsAll(known)) {
-                return true;
-            }
+        // The set as it is first: monotonicity answers it as well as its module, without making one.
+        Boolean known = remembered(axioms);
+        if (known != null) {
+            return known;
         }
-        for (Set<OWLAxiom> known : memory.notEntailing()) {
-            if (known.containsAll(module)) {
-                return false;
-            }
+        Set<OWLAxiom> module = module(axioms);
+        known = remembered(module);
+        if (known != null) {
+            return known;
         }
         reasonerCalls++;
         boolean entailed = reasoners instanceof ReasonerFactory ? askHermiT(module) : library.isEntailed(module);
@@ -101,23 +110,50 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
         return entailed;
     }
 
+    /** Whether {@code axioms} entail the fact, by the reasoner's earlier answers; null when they do not tell. */
+    private Boolean remembered(Set<OWLAxiom> axioms) {
+        for (Set<OWLAxiom> known : memory.entailing()) {
+            if (axioms.containsAll(known)) {
+                return true;
+            }
+        }
+        for (Set<OWLAxiom> known : memory.notEntailing()) {
+            if (known.containsAll(axioms)) {
+                return false;
+            }
+        }
+        return null;
+    }
+
     /**
-     * HermiT's own entailment check where it has one: the library's instead turns the fact into
-     * a class that must be unsatisfiable, which for an assertion puts a nominal in the ontology
-     * and costs HermiT a second tableau on every check. (Only HermiT: JFact's check fails on a
-     * reasoner that has not classified first.)
+     * HermiT on the set alone. For an individual's class or object property value, the set with
+     * the fact's negation added must be inconsistent: one tableau. HermiT's own entailment check
+     * of an assertion first sets up its instance manager, a tableau over the whole set and the
+     * index of known and possible instances, then tests the possible ones: two tableaux and an
+     * index, on each of the dozen checks of a search. Other facts go to HermiT's own check; the
+     * library's instead turns the fact into a class that must be unsatisfiable, a nominal for an
+     * assertion and a second tableau. (Only HermiT: JFact's check fails on a reasoner that has
+     * not classified first.)
      */
     private boolean askHermiT(Set<OWLAxiom> module) {
         OWLAxiom fact = library.getEntailment();
+        Set<OWLAxiom> axioms = module;
+        if (negation != null) {
+            axioms = new LinkedHashSet<>(module);
+            axioms.add(negation);
+        }
         OWLOntology ontology;
         try {
-            ontology = manager.createOntology(module);
+            ontology = manager.createOntology(axioms);
         } catch (OWLOntologyCreationException e) {
             throw new IllegalStateException(e);
         }
         try {
             OWLReasoner checking = reasoners.createReasoner(ontology, CHECKS);
             try {
+                if (negation != null) {
+                    return !checking.isConsistent();
+                }
                 if (checking.isEntailmentCheckingSupported(fact.getAxiomType())) {
                     return checking.isEntailed(fact);
                 }
@@ -132,23 +168,39 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
         return library.isEntailed(module);
     }
 
+    /** The negation of an individual's class or object property value, as an assertion; null for other facts. */
+    private static OWLAxiom negation(OWLAxiom fact, OWLDataFactory factory) {
+        if (fact instanceof OWLClassAssertionAxiom type) {
+            return factory.getOWLClassAssertionAxiom(factory.getOWLObjectComplementOf(type.getClassExpression()),
+                    type.getIndividual());
+        }
+        if (fact instanceof OWLObjectPropertyAssertionAxiom value) {
+            return factory.getOWLNegativeObjectPropertyAssertionAxiom(value.getProperty(), value.getSubject(),
+                    value.getObject());
+        }
+        return null;
+    }
+
     /**
      * The library's answer (the whole set checked, as it builds its ontology): the search's next
      * steps start from it, so which justification is found first stays the library's (a module
-     * here changed it to a larger one on robotics.owl). It checks again only for a set it did not
-     * check last: once per justification searched.
+     * here changed it to a larger one on robotics.owl). The library's checker computes it with a
+     * reasoner check of its own, once per justification searched and the dearest of all (the
+     * fact as a nominal, two tableaux for HermiT); the search has just asked this checker about
+     * the same set, so the library's checker is given that answer instead of a reasoner
+     * ({@link KnownAnswer}) and builds its set exactly as it would have.
      */
     @Override
     public Set<OWLAxiom> getEntailingAxioms(Set<OWLAxiom> axioms) {
-        return library.getEntailingAxioms(axioms);
+        knownAnswer.entailed = isEntailed(axioms);
+        return replaying.getEntailingAxioms(axioms);
     }
 
     private Set<OWLAxiom> module(Set<OWLAxiom> axioms) {
         if (axioms.isEmpty()) {
             return Set.of();
         }
-        Set<OWLAxiom> module = new SyntacticLocalityModuleExtractor(manager, axioms.stream(), ModuleType.STAR)
-                .extract(signature);
+        Set<OWLAxiom> module = Modules.star(axioms, signature);
         // In the order the library gave the axioms: its search, and so the justification it finds
         // first, depends on the order, which must not change from one run to the next.
         return axioms.stream().filter(a -> a.isLogicalAxiom() && module.contains(a))
@@ -194,5 +246,44 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
     @Override
     public boolean isUseModularisation() {
         return library.isUseModularisation();
+    }
+
+    /**
+     * A "reasoner" that answers the one question the library's satisfiability checker asks (is
+     * the fact's negation satisfiable?) with an answer found before: not entailed.
+     */
+    private static final class KnownAnswer implements OWLReasonerFactory {
+        boolean entailed;
+
+        @Override
+        public String getReasonerName() {
+            return "known answer";
+        }
+
+        @Override
+        public OWLReasoner createReasoner(OWLOntology ontology, OWLReasonerConfiguration configuration) {
+            boolean satisfiable = !entailed;
+            return (OWLReasoner) Proxy.newProxyInstance(OWLReasoner.class.getClassLoader(),
+                    new Class<?>[] {OWLReasoner.class}, (proxy, method, arguments) -> switch (method.getName()) {
+                        case "isSatisfiable" -> satisfiable;
+                        case "dispose" -> null;
+                        default -> throw new UnsupportedOperationException(method.getName());
+                    });
+        }
+
+        @Override
+        public OWLReasoner createNonBufferingReasoner(OWLOntology ontology, OWLReasonerConfiguration configuration) {
+            return createReasoner(ontology, configuration);
+        }
+
+        @Override
+        public OWLReasoner createReasoner(OWLOntology ontology) {
+            return createReasoner(ontology, CHECKS);
+        }
+
+        @Override
+        public OWLReasoner createNonBufferingReasoner(OWLOntology ontology) {
+            return createReasoner(ontology, CHECKS);
+        }
     }
 }
