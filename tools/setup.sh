@@ -325,7 +325,7 @@ step_cpp() {
 # the node extension serving it (sit_armor_injected/, editable), both into the venv's prefix, so
 # install/setup.bash needs no line for them. A reinstall first removes what the last one
 # installed (CMake's install manifest).
-SIT_LOGIC=2
+SIT_LOGIC=3
 step_scenes() {
   local hash build="$BUILD/sit_armor_injected_msgs"
   hash="$(hash_str "$SIT_LOGIC" "$VENV_HASH" "$ROOT" \
@@ -348,8 +348,10 @@ step_scenes() {
     grep "^$VENV/" "$build/install_manifest.txt" | while IFS= read -r f; do rm -f "$f"; done
   fi
   # Under the pip lock: a pip run of another step that lists the venv while this writes
-  # its egg-info read a half-written one ("Invalid version: None") and failed.
-  logged flock "$BUILD/.pip.lock" make -C "$build" install
+  # its egg-info read a half-written one ("Invalid version: None") and failed. The egg-info of
+  # an earlier version goes first: emptied by the removal above, it broke every later pip run.
+  logged flock "$BUILD/.pip.lock" sh -c 'rm -rf "$1"/sit_armor_injected_msgs-*.egg-info && make -C "$2" install' \
+    _ "$VENV/lib/python$PYVER/site-packages" "$build"
   venv_pip install --no-deps --no-build-isolation --config-settings editable_mode=compat -e sit_armor_injected
   done_in "$hash" "built"
 }
