@@ -14,6 +14,7 @@ import random
 import shutil
 import statistics
 import subprocess
+import sys
 import time
 from typing import Dict, List, Optional, Sequence
 
@@ -95,8 +96,9 @@ class CoreSnapshot:
         if any(not c.is_file() or c.stat().st_mtime < s.stat().st_mtime
                for c, s in zip(compiled, sources)):
             # make bench compiles them; this covers a suite started by hand or by the smoke test.
-            subprocess.run(['mvn', '-q', '-o', '-f', str(REPO / 'core' / 'pom.xml'),
-                            'test-compile'], check=True)
+            # -B: no colour codes; stdout to stderr: benchmarks print their JSON on stdout.
+            subprocess.run(['mvn', '-B', '-q', '-o', '-f', str(REPO / 'core' / 'pom.xml'),
+                            'test-compile'], check=True, stdout=sys.stderr)
         self.root.mkdir(parents=True)
         shutil.copy2(CORE_TARGET / 'armor-core.jar', self.root)
         shutil.copytree(CORE_TARGET / 'lib', self.root / 'lib')

@@ -53,9 +53,10 @@ def plugin_classpath(snapshot: CoreSnapshot) -> str:
         'SceneBench.java'
     compiled = tests / 'io' / 'github' / 'armor' / 'sit' / 'SceneBench.class'
     if not compiled.is_file() or compiled.stat().st_mtime < source.stat().st_mtime:
-        subprocess.run(['mvn', '-q', '-o', '-f', str(PLUGIN / 'pom.xml'), 'test-compile',
+        # -B: no colour codes; stdout to stderr: --json prints the results on stdout.
+        subprocess.run(['mvn', '-B', '-q', '-o', '-f', str(PLUGIN / 'pom.xml'), 'test-compile',
                         f'-Dcore.jar={REPO / "install" / "armor_core" / "armor-core.jar"}'],
-                       check=True)
+                       check=True, stdout=sys.stderr)
     return f'{tests}:{jar}:{snapshot.classpath}'
 
 

@@ -28,9 +28,14 @@ PY
 }
 
 workers="${ARMOR_TEST_WORKERS:-3}"
-# The benchmarks' in-process harness copies the core's test classes: compiled before anything
-# reads them, so that the JUnit run beside pytest never rewrites them under a benchmark.
+# The benchmarks' in-process harnesses use the core's and the plugins' test classes (the set-up
+# builds without them): compiled before anything reads them, so that the JUnit run beside
+# pytest never rewrites them under a benchmark.
 mvn -B -q -f core/pom.xml test-compile
+for pom in plugins/*/pom.xml; do
+  [ -f "$pom" ] || continue
+  mvn -B -q -f "$pom" test-compile -Dcore.jar="$root/install/armor_core/armor-core.jar"
+done
 if [ "$workers" = 0 ]; then
   junit
 else
