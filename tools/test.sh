@@ -1,21 +1,19 @@
 #!/usr/bin/env bash
-# The whole test suite: the core's and plugins' JUnit tests, the C++ client's GoogleTests and
-# the Python tests, which start the real node in its own process and call it over ROS 2 (JUnit
-# runs beside the Python tests). Run through `make test` (which sets up first).
+# The whole test suite: the core's JUnit tests, then the Python tests, which start the real
+# node in its own process and call it over ROS 2. Run through `make test` (which sets up first).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 source install/setup.bash
 
-junit() {
-  echo "== core: JUnit (Maven Surefire)"
-  mvn -B -q -f core/pom.xml test
-  for pom in plugins/*/pom.xml; do
-    [ -f "$pom" ] || continue
-    echo "== plugin $(dirname "$pom"): JUnit against the installed core"
-    mvn -B -q -f "$pom" test -Dcore.jar="$root/install/armor_core/armor-core.jar"
-  done
-  python3 - <<'PY'
+echo "== core: JUnit (Maven Surefire)"
+mvn -B -q -f core/pom.xml test
+for pom in plugins/*/pom.xml; do
+  [ -f "$pom" ] || continue
+  echo "== plugin $(dirname "$pom"): JUnit against the installed core"
+  mvn -B -q -f "$pom" test -Dcore.jar="$root/install/armor_core/armor-core.jar"
+done
+python3 - <<'PY'
 import glob, xml.etree.ElementTree as ET
 runs = failures = errors = skipped = 0
 for report in glob.glob('core/target/surefire-reports/TEST-*.xml') + glob.glob(
@@ -25,30 +23,6 @@ for report in glob.glob('core/target/surefire-reports/TEST-*.xml') + glob.glob(
     errors += int(suite.get('errors')); skipped += int(suite.get('skipped'))
 print(f'core and plugins: Tests run: {runs}, Failures: {failures}, Errors: {errors}, Skipped: {skipped}')
 PY
-}
-
-workers="${ARMOR_TEST_WORKERS:-3}"
-# The benchmarks' in-process harnesses use the core's and the plugins' test classes (the set-up
-# builds without them): compiled before anything reads them, so that the JUnit run beside
-# pytest never rewrites them under a benchmark.
-mvn -B -q -f core/pom.xml test-compile
-for pom in plugins/*/pom.xml; do
-  [ -f "$pom" ] || continue
-  mvn -B -q -f "$pom" test-compile -Dcore.jar="$root/install/armor_core/armor-core.jar"
-done
-if [ "$workers" = 0 ]; then
-  junit
-else
-  # The JUnit run keeps one core busy for minutes while pytest's files mostly wait for ROS
-  # discovery, restarts and reasoners: side by side, its log is shown once pytest is done.
-  junit_log="$root/build/logs/junit.log"
-  mkdir -p "$(dirname "$junit_log")"
-  junit > "$junit_log" 2>&1 &
-  junit_pid=$!
-  # A failing step below ends the script: the JUnit run (Maven under a subshell) ends with it.
-  trap 'pkill -TERM -P "$junit_pid" 2>/dev/null; kill "$junit_pid" 2>/dev/null; true' EXIT
-  echo "== core and plugins: JUnit started beside the other tests (log: $junit_log)"
-fi
 
 echo "== C++ client: GoogleTest without a node (ctest; its live tests run under pytest)"
 ctest --test-dir build/armor_cpp --output-on-failure --output-junit ctest-junit.xml
@@ -70,20 +44,11 @@ PY
 # its module fixtures start once. Files are taken in the order the suite gives them (the longest
 # first, see runs_for_minutes): xdist's default reorder by test count started the 1-test files
 # that run for minutes last. ARMOR_TEST_WORKERS=0 runs them one after the other.
+workers="${ARMOR_TEST_WORKERS:-3}"
 echo "== node, client and CLI: pytest over ROS 2 ($workers files at a time)"
 if [ "$workers" = 0 ]; then
   python -m pytest -p no:cacheprovider "$@"
-  exit
+else
+  python -m pytest -p no:cacheprovider --numprocesses "$workers" --dist loadfile \
+    --no-loadscope-reorder "$@"
 fi
-pytest_status=0
-python -m pytest -p no:cacheprovider --numprocesses "$workers" --dist loadfile \
-  --no-loadscope-reorder "$@" || pytest_status=$?
-junit_status=0
-wait "$junit_pid" || junit_status=$?
-trap - EXIT
-cat "$junit_log"
-if [ "$junit_status" != 0 ]; then
-  echo "JUnit failed (exit $junit_status): see above" >&2
-  exit "$junit_status"
-fi
-exit "$pytest_status"

@@ -43,7 +43,7 @@ def test_smoke_run_writes_every_section_with_figures(tmp_path):
     env = {**os.environ, 'ROS_DOMAIN_ID': domain}
     completed = subprocess.run(
         [sys.executable, str(REPO / 'bench' / 'suite.py'), '--scale', 'smoke', '--report',
-         str(report_path)], env=env, capture_output=True, text=True, timeout=600)
+         str(report_path)], env=env, capture_output=True, text=True, timeout=840)
     release_domain(domain)
     assert completed.returncode == 0, completed.stderr[-4000:]
     assert 'every checked answer was right' in completed.stderr
