@@ -147,6 +147,22 @@ def _made(folder: pathlib.Path) -> pathlib.Path:
     return folder
 
 
+@pytest.fixture(scope='session', autouse=True)
+def _rclpy_for_the_session():
+    """rclpy's default context, started once per test process and ended at its end.
+
+    An ArmorTransport that finds rclpy not started starts it and shuts it down when it closes:
+    the first test of a worker that made its own transport would otherwise end the context under
+    the session's transport, made meanwhile (every later test of that worker then failed with
+    InvalidHandle when the files ran longest first).
+    """
+    import rclpy
+    if not rclpy.ok():
+        rclpy.init()
+    yield
+    rclpy.try_shutdown()
+
+
 @pytest.fixture(scope='session')
 def armor_node(tmp_path_factory):
     node = start_node(tmp_path_factory.mktemp('armor'))
