@@ -44,7 +44,10 @@ def _ontology():
 @pytest.fixture(scope='module')
 def limited(tmp_path_factory):
     scratch = tmp_path_factory.mktemp('time_limit')
-    node = start_node(scratch, '-p', f'reasoner_timeout_ms:={LIMIT_MS}', namespace=NAMESPACE)
+    # No preload: under a loaded machine the preload's first reasoning alone can take longer than
+    # this node's 1-s limit, and a node whose preload fails does not start.
+    node = start_node(scratch, '-p', f'reasoner_timeout_ms:={LIMIT_MS}', '-p', "preload_file:=''",
+                      namespace=NAMESPACE)
     armor = ArmorTransport(namespace=NAMESPACE, service_wait_s=120.0)
 
     def call(words, *args):
