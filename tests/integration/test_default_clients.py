@@ -18,17 +18,12 @@ import default_clients  # noqa: E402
 
 @pytest.fixture
 def coordinator(armor):
-    """A default-QoS client of the session's node (started by `armor`), for setup and audits."""
-    import rclpy
-    owns_rclpy = not rclpy.ok()
-    if owns_rclpy:
-        rclpy.init()
+    """A default-QoS client of the session's node (started by `armor`), for setup and audits
+    (rclpy is started for the session by conftest)."""
     caller = default_clients.DefaultClient(default_clients.service_name(''),
                                            'default_qos_coordinator')
     yield caller
     caller.close()
-    if owns_rclpy:
-        rclpy.try_shutdown()
 
 
 def test_sequential_default_clients_get_every_answer(tmp_path, coordinator):

@@ -122,10 +122,3 @@ def _service(node, kind, name, request):
     assert future.done(), name
     return future.result()
 
-
-@pytest.fixture(autouse=True)
-def _rclpy_context():
-    import rclpy
-    if not rclpy.ok():
-        rclpy.init()
-    yield
