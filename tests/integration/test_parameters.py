@@ -13,7 +13,6 @@ import time
 from armor_client import ArmorTransport
 from armor_service.parameters import NODE_PARAMETERS
 from conftest import call_words, ONTOLOGIES, start_node, TEST_ONTOLOGIES
-import pytest
 
 PATH_NOT_ALLOWED = 213
 
@@ -121,4 +120,3 @@ def _service(node, kind, name, request):
         rclpy.spin_once(node, timeout_sec=0.1)
     assert future.done(), name
     return future.result()
-
