@@ -81,9 +81,11 @@ def wrong_in(results: dict) -> List[str]:
                 wrong.append(f'8. default clients, {run}: {audit[key]} {key.replace("_", " ")} '
                              'after the recovery')
     for row in results.get('explanations', {}).get('rows', []):
-        for problem in row.get('wrong', []):
-            wrong.append(f'12. explanations, {row["map"]}, {row["individuals"] or "TBox"}, {row["kind"]}: '
-                         f'{problem}')
+        label = f'12. explanations, {row["map"]}, {row["individuals"] or "TBox"}, {row["kind"]}'
+        if 'error' in row:
+            # No figure at all is no right answer either: the row's harness failed.
+            wrong.append(f'{label}: no answer: {row["error"]}')
+        wrong += [f'{label}: {problem}' for problem in row.get('wrong', [])]
     for individuals, by_reasoner in results.get('soma', {}).items():
         for reasoner, entry in by_reasoner.items():
             if entry['modular'].get('wrong'):

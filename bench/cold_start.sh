@@ -4,9 +4,10 @@
 #   bash bench/cold_start.sh [BRANCH]     (default: the branch checked out here)
 #
 # Clones this repository into a scratch folder and runs `make run` there with HOME and the
-# pip, npm and Maven caches pointed at empty folders, so every download is made. Prints each
-# set-up step's time (from its own line), the wall time to "ARMOR ready", the first
-# `armor call` after it, then the same for a second `make run` (warm: nothing to do).
+# pip, uv (through XDG_CACHE_HOME), npm and Maven caches pointed at empty folders, so every
+# download is made. Prints each set-up step's wall and CPU time (from its own line), the wall
+# time to "ARMOR ready", the first `armor call` after it, then the same for a second
+# `make run` (warm: nothing to do).
 # The node runs in a free DDS domain with its web view on a free port; everything is removed
 # at the end.
 set -euo pipefail
@@ -48,6 +49,7 @@ cd "$scratch/clone"
 # time goes to $ready_s. The node stays up (process group $node). Not in $(...): $node is needed.
 run_until_ready() {
   local started=$EPOCHREALTIME
+  : > "$1"
   make run WEB_PORT="$port" > "$1" 2>&1 &
   node=$!
   until grep -q 'ARMOR ready' "$1"; do
@@ -69,7 +71,9 @@ sleep 3  # a user switching to another terminal
 call=$(first_call "$scratch/call.log")
 stop_node
 echo "cold: set-up steps (as make run printed them):"
-grep -E '^[a-z_]+: .* in [0-9.]+ s$|^setup: done' "$scratch/cold.log" | sed 's/^/  /'
+grep -E '^[a-z_]+: .* in [0-9.]+ s( \([0-9.]+ CPU-s\))?$|^setup: done' "$scratch/cold.log" | sed 's/^/  /'
+echo "cold: set-up steps' CPU time in all: $(sed -n 's/.* (\([0-9.]*\) CPU-s)$/\1/p' "$scratch/cold.log" \
+  | awk '{ t += $1 } END { printf "%.1f", t }') CPU-s on $(nproc) cores"
 echo "cold: \"ARMOR ready\" after $cold s; first armor call 3 s after it: $call s"
 sed 's/^/  | /' "$scratch/call.log"
 (source install/setup.bash && python -c 'from armor_client.cli import call_relay; call_relay.stop()')

@@ -91,7 +91,11 @@ def _run(classpath: str, ontology: pathlib.Path, samples: int, kind: str, questi
                           str(samples), WORDS[kind], *questions],
                          capture_output=True, text=True, timeout=3600)
     if run.returncode != 0:
-        return {'error': (run.stderr.strip().splitlines() or ['?'])[-1]}
+        # The harness's own "failed: <code> ..." line, or the exception's first line (a stack
+        # trace ends in "... N more", which says nothing).
+        lines = run.stderr.strip().splitlines()
+        said = [line for line in lines if line.startswith('failed:') or 'Exception' in line or 'Error' in line]
+        return {'error': (said or lines or ['exit code ' + str(run.returncode)])[0][:300]}
     figures = json.loads(run.stdout.strip().splitlines()[-1])
     searched = [SEARCHED.search(d) for d in figures['descriptions']]
     return {'load_s': figures['load_s'], **latency_summary(figures['seconds']),

@@ -8,6 +8,7 @@ core taken when the suite starts (a rebuild of core/target cannot change it mid-
 """
 
 import dataclasses
+import json
 import os
 import pathlib
 import random
@@ -135,6 +136,20 @@ def peak_rss_mib(pid: int) -> Dict[str, float]:
 
 
 _namespaces = iter(range(1, 1 << 30))
+# The test suite runs the benchmarks at smoke scale to prove they still run, not to measure: it
+# sets this to JVM options (a JSON list) added to every benchmark node's jvm_options, its own or
+# the node's default (tests/integration/conftest.py: C1 alone). Figures come from runs without.
+EXTRA_JVM_OPTIONS_VARIABLE = 'ARMOR_BENCH_EXTRA_JVM_OPTIONS'
+
+
+def _with_extra_jvm_options(parameters: Dict[str, str]) -> Dict[str, str]:
+    extra = os.environ.get(EXTRA_JVM_OPTIONS_VARIABLE)
+    if not extra:
+        return parameters
+    from armor_service.node_harness import default_jvm_options
+    own = parameters.get('jvm_options')
+    options = json.loads(own) if own else default_jvm_options()
+    return {**parameters, 'jvm_options': json.dumps([*options, *json.loads(extra)])}
 
 
 class BenchNode:
@@ -160,7 +175,7 @@ class BenchNode:
         if preload_robotics:
             arguments += ['-p', f'preload_file:={REPO / "ontologies" / "robotics.owl"}',
                           '-p', 'preload_reference:=robotics']
-        for name, value in (parameters or {}).items():
+        for name, value in _with_extra_jvm_options(parameters or {}).items():
             arguments += ['-p', f'{name}:={value}']
         self.process = ArmorNodeProcess(scratch / f'node{self.namespace.replace("/", "_")}.log',
                                         arguments, cwd=scratch)

@@ -39,3 +39,13 @@ def test_a_new_head_replaces_the_summary_and_sections_one_to_seven_only():
     assert 'old one' not in rewritten and 'old seven' not in rewritten
     assert _section(rewritten, 8).strip().endswith('old eight')
     assert _section(rewritten, 12).strip().endswith('old twelve')
+
+
+def test_an_explanations_row_that_measured_nothing_fails_the_suite():
+    from answers import wrong_in
+    rows = [{'map': 'robotics', 'individuals': 1000, 'kind': 'class', 'right': 20, 'wrong': []},
+            {'map': 'robotics', 'individuals': 10000, 'kind': 'class',
+             'error': 'java.lang.NoClassDefFoundError: io/github/armor/core/JustificationCheck'}]
+    wrong = wrong_in({'explanations': {'rows': rows}})
+    assert wrong == ['12. explanations, robotics, 10000, class: no answer: '
+                     'java.lang.NoClassDefFoundError: io/github/armor/core/JustificationCheck']

@@ -27,7 +27,7 @@ def core_text():
 
 
 def test_the_python_catalogue_docs_and_exit_codes_agree_with_the_core(core_text):
-    found = tool.differences(core_text)
+    found = tool.differences(core_text, tool.installed_plugins_catalogue(tool.core_jar()))
     assert not found, '\n'.join(found)
 
 
@@ -81,3 +81,46 @@ def test_a_command_added_to_the_core_changes_the_cpp_contract_header(core_text):
     assert ('inline constexpr Command QUERY_IND_COUNT{"QUERY", "IND", "COUNT", Kind::Query, '
             '1, 0, false, false};') in header
     assert '  &QUERY_IND_COUNT,\n};' in header
+
+
+def test_a_plugins_catalogue_gives_a_cpp_header_of_its_faced_commands(core_text):
+    """tools/faces.py --cpp-plugins: a method per plugin face, none for a name already taken."""
+    spec = importlib.util.spec_from_file_location('faces_tool', REPO / 'tools' / 'faces.py')
+    faces = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(faces)
+    core = json.loads(core_text)
+
+    def plugin(key, kind, required, method, answer, *parameters):
+        return {'key': key, 'words': key.split(), 'aliases': [], 'kind': kind,
+                'origin': 'shop.jar', 'changes_ontology': kind == 'manipulation',
+                'summary': f'does {key.lower()}',
+                'args': {'required': required, 'optional': [], 'variadic': False},
+                'face': {'method': method, 'answer': answer, 'parameters': [
+                    {'name': n, 'type': t} for n, t in parameters]}}
+
+    core['commands'] += [
+        plugin('ADD STOCK ITEM', 'manipulation', ['ind', 'n'], 'stock', 'none',
+               ('item', 'string'), ('count', 'int')),
+        plugin('QUERY SHOP PLAN', 'query', ['plan path'], 'shop_plan', 'values',
+               ('plan', 'string')),
+        plugin('QUERY SHOP CLASH', 'query', ['class'], 'instances', 'entities', ('cls', 'string')),
+        plugin('QUERY SHOP SAVE', 'query', [], 'batch', 'entities')]
+    header = faces.cpp_plugin_header(core, 'shop', 'a test')
+    assert ('inline constexpr Command ADD_STOCK_ITEM{\n  "ADD", "STOCK", "ITEM", '
+            'Kind::Manipulation, 2, 0, false, true};') in header
+    assert ('  decltype(auto) stock(const std::string & item, int count)\n'
+            '  {return this->template change<contract::ADD_STOCK_ITEM>('
+            'item, std::to_string(count));}'
+            ) in header
+    # An argument named a path is sent absolute, as by every client.
+    assert ' '.join(header.split()).count(
+        '.values( contract::QUERY_SHOP_PLAN, {armor::path_argument(plan)});') == 1
+    # instances (a built-in face) and batch (hand-written) are the client's already.
+    assert 'QUERY_SHOP_CLASH' not in header and 'QUERY_SHOP_SAVE' not in header
+    assert 'namespace shop\n{' in header and 'class Reference : public armor::Reference' in header
+    # The installed plugins' header is the one make catalogue wrote.
+    installed = tool.installed_plugins_catalogue(tool.core_jar())
+    assert faces.installed_plugins_header(installed) == faces.CPP_PLUGINS.read_text()
+    assert 'pddl_problem(const std::string & mapping)' in faces.CPP_PLUGINS.read_text()
+    with pytest.raises(ValueError, match='not a C.. namespace of its own'):
+        faces.cpp_plugin_header(core, 'armor', 'a test')

@@ -12,7 +12,8 @@ the node's own parameters of armor_service/parameters.py), and a first row in
 docs/commands.md for a command it lacks (summary and an example built from the argument
 names, to be edited), and the C++ client's armor_cpp/include/armor_cpp/contract.hpp
 (armor_cpp/contract_header.py), and the clients' methods of the commands that have a face:
-armor_client/armor_client/faces.py and armor_cpp/include/armor_cpp/faces.hpp (tools/faces.py).
+armor_client/armor_client/faces.py and armor_cpp/include/armor_cpp/faces.hpp (tools/faces.py),
+and the C++ methods of the installed plugins' commands: armor_cpp/include/armor_cpp/plugins.hpp.
 Checked against it: the command and
 exit-code tables of docs/commands.md (they carry hand-written examples), and the sample
 parameters file armor_service/config/armor.params.yaml (every parameter shown, no other).
@@ -29,7 +30,7 @@ import pathlib
 import re
 import subprocess
 import sys
-from typing import Dict, Iterable, List, Set
+from typing import Dict, Iterable, List, Sequence, Set
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 CATALOGUE_JSON = REPO / 'armor_contract' / 'armor_contract' / 'catalogue.json'
@@ -53,12 +54,14 @@ def cpp_contract_header(core_text: str) -> str:
 CPP_CONTRACT = REPO / 'armor_cpp' / 'include' / 'armor_cpp' / 'contract.hpp'
 
 
-def client_faces(core: dict) -> Dict[pathlib.Path, str]:
-    """The generated client methods (tools/faces.py), by file."""
+def client_faces(core: dict, installed: dict) -> Dict[pathlib.Path, str]:
+    """The generated client methods (tools/faces.py), by file; ``installed``: the catalogue
+    with the installed plugins, whose commands get C++ methods in plugins.hpp."""
     spec = importlib.util.spec_from_file_location('faces', REPO / 'tools' / 'faces.py')
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    return module.generated(core)
+    return {**module.generated(core),
+            module.CPP_PLUGINS: module.installed_plugins_header(installed)}
 
 
 def core_jar() -> pathlib.Path:
@@ -68,10 +71,18 @@ def core_jar() -> pathlib.Path:
     return pathlib.Path(jar)
 
 
-def core_catalogue_text(jar: pathlib.Path) -> str:
-    """What the core prints for --catalogue (with the built-in command groups only)."""
-    return subprocess.run(['java', '-jar', str(jar), '--catalogue'], check=True,
+def core_catalogue_text(jar: pathlib.Path, plugin_dirs: Sequence[str] = ()) -> str:
+    """What the core prints for --catalogue (the built-in command groups, and the plugins of
+    ``plugin_dirs``)."""
+    config = [json.dumps({'plugin_dirs': list(plugin_dirs)})] if plugin_dirs else []
+    return subprocess.run(['java', '-jar', str(jar), '--catalogue', *config], check=True,
                           capture_output=True, text=True, timeout=120).stdout
+
+
+def installed_plugins_catalogue(jar: pathlib.Path) -> dict:
+    """The catalogue with the plugins make setup installs (plugins/*: install/armor_plugins)."""
+    plugins = os.environ.get('ARMOR_PLUGIN_DIRS') or str(REPO / 'install' / 'armor_plugins')
+    return json.loads(core_catalogue_text(jar, plugins.split(':')))
 
 
 def _alternatives(cell: str) -> List[str]:
@@ -151,7 +162,7 @@ def readme_with_table(readme: str) -> str:
     return readme[:start] + parameter_table() + readme[readme.index(TABLE_END, start):]
 
 
-def differences(core_text: str) -> List[str]:
+def differences(core_text: str, installed: dict) -> List[str]:
     """Everything that disagrees with the core's catalogue, one finding per line."""
     found: List[str] = []
     core = json.loads(core_text)
@@ -190,7 +201,7 @@ def differences(core_text: str) -> List[str]:
     if not CPP_CONTRACT.exists() or CPP_CONTRACT.read_text() != cpp_contract_header(core_text):
         found.append(f'{CPP_CONTRACT.relative_to(REPO)} differs from the core\'s catalogue '
                      '(run make catalogue)')
-    for path, text in client_faces(core).items():
+    for path, text in client_faces(core, installed).items():
         if not path.exists() or path.read_text() != text:
             found.append(f'{path.relative_to(REPO)} differs from the faces of the catalogue '
                          '(run make catalogue)')
@@ -243,19 +254,21 @@ def main(argv: List[str]) -> int:
                         help='write nothing; exit 1 on a difference')
     options = parser.parse_args(argv)
     core_text = core_catalogue_text(core_jar())
+    installed = installed_plugins_catalogue(core_jar())
     if not options.check:
         CATALOGUE_JSON.write_text(core_text)
         CPP_CONTRACT.write_text(cpp_contract_header(core_text))
-        for path, text in client_faces(json.loads(core_text)).items():
+        for path, text in client_faces(json.loads(core_text), installed).items():
             path.write_text(text)
         README.write_text(readme_with_table(README.read_text()))
         COMMANDS_DOC.write_text(docs_with_new_commands(COMMANDS_DOC.read_text(),
                                                        json.loads(core_text)))
         print(f'wrote {CATALOGUE_JSON.relative_to(REPO)}, {CPP_CONTRACT.relative_to(REPO)}, '
-              'the generated client methods (faces.py, faces.hpp), the parameter table'
+              'the generated client methods (faces.py, faces.hpp, plugins.hpp), the parameter'
+              ' table'
               ' of README.md and'
               ' a row in docs/commands.md for each command it lacked (edit its example)')
-    found = differences(core_text)
+    found = differences(core_text, installed)
     for finding in found:
         print(finding, file=sys.stderr)
     return 1 if found else 0

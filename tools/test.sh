@@ -5,6 +5,10 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 source install/setup.bash
+# Imports may cache their bytecode (see tools/setup.sh): with PYTHONDONTWRITEBYTECODE set, each
+# of the suite's processes (nodes, CLI calls, workers) compiled rclpy, numpy and ARMOR's modules
+# again, 0.6 CPU-s per process.
+unset PYTHONDONTWRITEBYTECODE
 
 echo "== core: JUnit (Maven Surefire)"
 mvn -B -q -f core/pom.xml test

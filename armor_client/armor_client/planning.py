@@ -10,6 +10,7 @@ import os
 from typing import Any, Callable, Mapping, Sequence, Tuple, Union
 
 from armor_client.paths import absolute
+from armor_client.plugin_faces import written_for
 
 MappingArgument = Union[str, 'os.PathLike[str]', Mapping[str, Any]]
 
@@ -33,6 +34,7 @@ class PlannerBridge:
                  parse: Callable[[Any], Any]) -> Any:
         raise NotImplementedError
 
+    @written_for('QUERY PDDL PROBLEM')
     def pddl_problem(self, mapping: MappingArgument) -> str:
         """A PDDL problem of this reference's state (QUERY PDDL PROBLEM).
 

@@ -10,13 +10,15 @@ plugin's directive and reads its answer exactly as a generated method of the sam
 (entities as names, typed values, Manchester text, or nothing for a change). ``help()``,
 ``inspect.signature`` and ``dir()`` see those methods; arguments are checked before anything
 is sent. A face whose method name the client already has (a built-in method, another plugin's)
-is refused: not added, with a warning naming both, and ``learn_plugin_methods()`` lists it.
+is refused: not added, with a warning naming both, and ``learn_plugin_methods()`` lists it,
+unless the client's method was written by hand for that very command (``@written_for``: the
+installed plugins' composites, such as ``pddl_problem``), which is kept without a word.
 """
 
 import inspect
 import warnings
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, List, Sequence
+from typing import Any, Callable, Dict, List, Sequence, TypeVar
 
 from armor_client.answers import Answers
 from armor_client.values import Value
@@ -30,6 +32,20 @@ _READERS: Dict[str, Callable[[Answers], Callable[[Any], Any]]] = {
     'values': lambda answers: answers.values,
     'expressions': lambda answers: answers.expressions,
 }
+
+Method = TypeVar('Method', bound=Callable[..., Any])
+
+
+def written_for(command: str) -> Callable[[Method], Method]:
+    """Mark a method written by hand for a plugin's command (``'QUERY PDDL PROBLEM'``).
+
+    That command's face then adds no method and is not reported as refused: the hand-written
+    one (which reads the answer better than a face can) answers it.
+    """
+    def mark(method: Method) -> Method:
+        method._plugin_command = command  # type: ignore[attr-defined]
+        return method
+    return mark
 
 
 @dataclass
@@ -54,17 +70,27 @@ def add_methods(classes: Dict[type, type], commands: Sequence[Command],
             client's class it derives from (whose methods a plugin may not replace); a batch
             gets the changes only.
         commands: the node's catalogue.
-        known: what earlier calls added (kept: a method once added stays).
+        known: what earlier calls added: kept when this catalogue has the same command, removed
+            from the classes when it does not (a node restarted without that plugin).
 
     Returns:
         ``known``, with what this catalogue added and refused.
     """
+    for name, added in list(known.added.items()):
+        if added not in commands:
+            for session_class in classes:
+                if name in vars(session_class):
+                    delattr(session_class, name)
+            del known.added[name]
+    known.refused.clear()
     for command in commands:
         face = command.face
         if face is None or command.origin == 'core' or known.added.get(face.method) == command:
             continue
         # Batches queue changes: a query's method is the references' only.
         targets = list(classes.items()) if face.answer == 'none' else list(classes.items())[:1]
+        if all(_written_for(built_in, face.method) == command.name for _, built_in in targets):
+            continue
         taken = next((why for why in (_taken(built_in, face.method) for _, built_in in targets)
                       if why), '') or _added_by(known, face.method)
         if taken:
@@ -78,6 +104,10 @@ def add_methods(classes: Dict[type, type], commands: Sequence[Command],
             setattr(session_class, face.method, method)
         known.added[face.method] = command
     return known
+
+
+def _written_for(built_in: type, method: str) -> str:
+    return getattr(getattr(built_in, method, None), '_plugin_command', '')
 
 
 def _taken(built_in: type, method: str) -> str:
@@ -105,6 +135,12 @@ def face_method(command: Command) -> Callable[..., Any]:
     reader = _READERS[face.answer]
 
     def method(self: Any, *args: Any, **kwargs: Any) -> Any:
+        armor = getattr(self, 'armor', None)  # a reference's session (a batch has none)
+        if armor is not None and armor._plugin_methods_stale():
+            # The node restarted, maybe with other plugins: call what its catalogue says now
+            # (this method again, another face of that name, or an AttributeError).
+            armor._plugin_method(face.method)
+            return getattr(self, face.method)(*args, **kwargs)
         try:
             bound = signature.bind(self, *args, **kwargs)
         except TypeError as e:

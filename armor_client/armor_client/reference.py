@@ -1,12 +1,7 @@
 # Copyright 2026 The ARMOR for ROS 2 authors. Licensed under the Apache License 2.0.
 """The Python client: one Armor session, one Reference object per ontology.
 
->>> from armor_client import Armor
->>> with Armor('planner') as armor:                                      # doctest: +SKIP
-...     robotics = armor.reference('robotics')
-...     robotics.add_object_value('isIn', 'alice', 'bedroom')
-...     print(robotics.instances('OccupiedRoom'))
-['bedroom', 'kitchen']
+The package's docstring (``armor_client``) shows them in use.
 """
 
 import contextlib

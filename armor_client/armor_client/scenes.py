@@ -17,6 +17,7 @@ import json
 from dataclasses import dataclass, field
 from typing import Any, Callable, Dict, Iterable, List, Sequence, Tuple
 
+from armor_client.plugin_faces import written_for
 from armor_contract.scenes import (AXIS_THRESHOLD, ElementLike, POSITION_THRESHOLD,
                                    read_answer, Recognition, SCENE_WORDS, scene_arguments,
                                    SceneAnswer)
@@ -75,10 +76,12 @@ class Scenes:
             SCENE_WORDS, scene_arguments(elements, threshold, position_threshold, axis_threshold),
             lambda response: read_answer(response.queried_objects, self.answers.entity))
 
+    @written_for('QUERY SIT SCENES')
     def scene_classes(self) -> List[SceneClass]:
         """The learned scene classes, in the order they were learned (QUERY SIT SCENES)."""
         return self._execute(('QUERY', 'SIT', 'SCENES'), [], self._scene_classes)
 
+    @written_for('QUERY SIT RECENT')
     def recent_scenes(self) -> List[Dict[str, Any]]:
         """The last scenes of this reference since the core started (QUERY SIT RECENT).
 

@@ -10,7 +10,8 @@ two, so a method added once serves both clients.
 """
 
 import os
-from typing import Any, Awaitable, Callable, Generic, Optional, Sequence, Type, TypeVar
+from typing import (Any, Awaitable, Callable, FrozenSet, Generic, Optional, Sequence, Type,
+                    TypeVar)
 
 from armor_client.batch import BatchBase
 from armor_client.errors import ArmorError, error_for
@@ -60,6 +61,8 @@ class SessionBase(SessionCommands, Generic[R]):
         self._reference_class = _own(type(self)._reference_class)
         self._batch_class = _own(type(self)._batch_class)
         self._plugin_methods: Optional[PluginMethods] = None
+        # The node that answered the catalogue the methods come from (transport.node_identity).
+        self._learned_from: Optional[FrozenSet[bytes]] = None
 
     def reference(self, name: str, iris: Optional[bool] = None) -> R:
         """The object for a reference that is loaded (or will be); nothing is sent yet.
@@ -77,13 +80,14 @@ class SessionBase(SessionCommands, Generic[R]):
         """Ask the node for its catalogue; give this session's references its plugins' methods.
 
         Done on its own the first time a reference is asked for a method it does not have, or
-        makes a batch (which gets the plugins' changes); call it again after the node
-        restarted with other plugins.
+        makes a batch (which gets the plugins' changes), and again when the node has restarted
+        since (its plugins may be others): methods of commands it no longer has are removed.
 
         Returns:
             A PluginMethods (an awaitable of it from AsyncArmor): the methods added and the
             faces refused because the client already has their method name.
         """
+        self._learned_from = self._node_identity()
         return self._session('', ('GET', 'CATALOGUE', ''), [], self._add_plugin_methods)
 
     def _batch_with_plugin_methods(self, *args: Any) -> Any:
@@ -95,13 +99,31 @@ class SessionBase(SessionCommands, Generic[R]):
         return self._batch_class(*args)
 
     def _plugin_method(self, name: str) -> bool:
-        """Whether the node's plugins give the references a method ``name`` (asked once)."""
-        if self._plugin_methods is None:
+        """Whether the node's plugins give the references a method ``name``.
+
+        Asked once, and again when the node has restarted since (_plugin_methods_stale).
+        """
+        if self._plugin_methods is None or self._plugin_methods_stale():
+            if self._plugin_methods is not None:
+                self.transport.node_replaced()  # a new node may drop an early answer
+            self._learned_from = self._node_identity()
             # Blocking in both clients: an attribute lookup cannot await (one round trip).
             request = directive(self.client_name, '', 'GET', 'CATALOGUE', '')
             self._add_plugin_methods(_checked(self.transport.call(request,
                                                                   timeout_s=self.timeout_s)))
         return name in self._plugin_methods.added  # type: ignore[union-attr]
+
+    def _plugin_methods_stale(self) -> bool:
+        """Whether the plugin methods come from a node that no longer serves the namespace.
+
+        A restarted node may load other plugins. A look-up in the ROS graph: nothing is sent.
+        """
+        return self._plugin_methods is not None and self._node_identity() != self._learned_from
+
+    def _node_identity(self) -> Optional[FrozenSet[bytes]]:
+        # A stand-in transport (tests) that cannot tell never reports a restart.
+        identity = getattr(self.transport, 'node_identity', None)
+        return identity() if identity is not None else None
 
     def _add_plugin_methods(self, response: Any) -> PluginMethods:
         answered = _catalogue(response).commands

@@ -29,21 +29,16 @@ import logging
 import re
 import shlex
 import threading
-import time
-import weakref
 from dataclasses import dataclass, field
 from types import SimpleNamespace
 from typing import Any, Callable, Dict, List, Optional, Tuple, Union
 
 from armor_client import commands
 from armor_client.errors import ArmorArgumentError, ArmorServiceCallError, error_for
-from armor_client.transport import ArmorTransport, call_service, directive
+from armor_client.transport import ArmorTransport, directive
 from armor_client.values import answer_value, is_literal, short_name
-from armor_contract.events import (ANSWER_QOS, CHANGE_QOS, CHANGE_TOPIC, SUBSCRIBE_SERVICE,
-                                   UNSUBSCRIBE_SERVICE)
-from armor_contract.services import SERVICE_QOS
+from armor_contract.events import ANSWER_QOS, CHANGE_QOS, CHANGE_TOPIC
 from armor_msgs.msg import ArmorAnswer, ArmorChange, ArmorDirectiveReq
-from armor_msgs.srv import ArmorSubscribe, ArmorUnsubscribe
 from rclpy.callback_groups import MutuallyExclusiveCallbackGroup
 from rclpy.event_handler import SubscriptionEventCallbacks
 
@@ -165,71 +160,6 @@ def _sorted(values) -> List[Any]:
     return sorted(values, key=lambda value: (str(type(value)), str(value)))
 
 
-class _Services:
-    """The node's armor_subscribe and armor_unsubscribe, for one transport."""
-
-    def __init__(self, transport: ArmorTransport):
-        prefix = transport.namespace.rstrip('/') + '/' if transport.namespace else ''
-        self.prefix = prefix
-        node = transport.node
-        self._subscribe: Any = node.create_client(ArmorSubscribe, prefix + SUBSCRIBE_SERVICE,
-                                                  qos_profile=SERVICE_QOS)
-        self._unsubscribe: Any = node.create_client(
-            ArmorUnsubscribe, prefix + UNSUBSCRIBE_SERVICE, qos_profile=SERVICE_QOS)
-        self._service_wait_s = transport.service_wait_s
-        self._proven = False
-        self._lock = threading.Lock()
-
-    def subscribe(self, request: ArmorDirectiveReq, timeout_s: Optional[float]) -> Any:
-        self._prove()
-        return call_service(self._subscribe, ArmorSubscribe.Request(armor_request=request),
-                            timeout_s)
-
-    def unsubscribe(self, subscription_id: str, timeout_s: Optional[float]) -> Any:
-        self._prove()
-        return call_service(self._unsubscribe,
-                            ArmorUnsubscribe.Request(subscription_id=subscription_id), timeout_s)
-
-    def _prove(self) -> None:
-        """Wait until armor_unsubscribe has answered once (transport.py says why).
-
-        Again after the services went away (a restarted node): a request sent while no server
-        is there is lost, and its caller would wait for ever.
-        """
-        with self._lock:
-            if self._proven and self._subscribe.service_is_ready():
-                return
-            deadline = time.monotonic() + self._service_wait_s
-            for client in (self._subscribe, self._unsubscribe):
-                remaining = deadline - time.monotonic()
-                if remaining <= 0 or not client.wait_for_service(timeout_sec=remaining):
-                    raise ArmorServiceCallError(
-                        f'service {client.srv_name} did not answer within '
-                        f'{self._service_wait_s:.0f} s; is an ARMOR node (of this version) '
-                        'running?')
-            while True:
-                try:
-                    call_service(self._unsubscribe, ArmorUnsubscribe.Request(subscription_id=''),
-                                 2.0)
-                    self._proven = True
-                    return
-                except ArmorServiceCallError:
-                    if time.monotonic() > deadline:
-                        raise
-
-
-_SERVICES: 'weakref.WeakKeyDictionary[ArmorTransport, _Services]' = weakref.WeakKeyDictionary()
-_SERVICES_LOCK = threading.Lock()
-
-
-def _services(transport: ArmorTransport) -> _Services:
-    with _SERVICES_LOCK:
-        services = _SERVICES.get(transport)
-        if services is None:
-            services = _SERVICES[transport] = _Services(transport)
-        return services
-
-
 class Subscription:
     """A standing query: ``callback`` is called with an AnswerChange whenever its answer moves.
 
@@ -269,8 +199,7 @@ class Subscription:
         # Re-entrant: a callback may read .answer or close() (it runs holding the lock, for order).
         self._lock = threading.RLock()
         self._closed = False
-        self._services = _services(transport)
-        response = self._services.subscribe(self.directive, timeout_s)
+        response = transport.subscribe(self.directive, timeout_s)
         if not response.success:
             raise error_for(SimpleNamespace(exit_code=response.exit_code, timeout=False,
                                             error_description=response.error_description))
@@ -309,7 +238,7 @@ class Subscription:
             self._closed = True
             self._transport.node.destroy_subscription(self._ros_subscription)
         with contextlib.suppress(ArmorServiceCallError):
-            self._services.unsubscribe(self.id, _UNSUBSCRIBE_WAIT_S)
+            self._transport.unsubscribe(self.id, _UNSUBSCRIBE_WAIT_S)
 
     def __enter__(self) -> 'Subscription':
         return self

@@ -9,18 +9,20 @@ import itertools
 import os
 import threading
 import time
-from typing import Any, Optional, Sequence, Set
+from typing import Any, FrozenSet, Optional, Sequence, Set, Tuple
 
 from armor_client import commands
 from armor_client.errors import ArmorCallTimeout, ArmorServiceCallError
 from armor_client.paths import absolute_args
+from armor_contract.events import CHANGE_TOPIC, SUBSCRIBE_SERVICE, UNSUBSCRIBE_SERVICE
 from armor_contract.services import DIRECTIVE_SERVICE, LIST_SERVICE, SERVICE_QOS
 from armor_contract.spinning import spin_while
 from armor_msgs.msg import ArmorDirectiveReq, ArmorDirectiveRes
-from armor_msgs.srv import ArmorDirective, ArmorDirectiveList
+from armor_msgs.srv import ArmorDirective, ArmorDirectiveList, ArmorSubscribe, ArmorUnsubscribe
 import rclpy
 from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
+from rclpy.signals import SignalHandlerOptions
 
 _node_numbers = itertools.count()
 
@@ -72,7 +74,11 @@ class ArmorTransport:
         self._owns_context = False
         if node is None:
             if not rclpy.ok():
-                rclpy.init()
+                # Without rclpy's signal handlers: theirs shut the context down from the signal
+                # while this transport's spinner waits in it, which could end the process in a
+                # segmentation fault; Python's own (KeyboardInterrupt, a SIGTERM handler of the
+                # caller's) leave through the caller's with block, which closes in order.
+                rclpy.init(signal_handler_options=SignalHandlerOptions.NO)
                 self._owns_context = True
             node = rclpy.create_node(f'armor_client_{os.getpid()}_{next(_node_numbers)}')
             self._executor = MultiThreadedExecutor(num_threads=2)
@@ -90,8 +96,13 @@ class ArmorTransport:
             ArmorDirective, prefix + DIRECTIVE_SERVICE, qos_profile=SERVICE_QOS)
         self._list: Any = node.create_client(
             ArmorDirectiveList, prefix + LIST_SERVICE, qos_profile=SERVICE_QOS)
+        self._prefix = prefix
         self._service_wait_s = service_wait_s
         self._ready: Set[str] = set()
+        self._change_topic = prefix + CHANGE_TOPIC
+        # armor_subscribe and armor_unsubscribe: made at the first subscription.
+        self._subscription_clients: Optional[Tuple[Any, Any]] = None
+        self._subscription_lock = threading.Lock()
 
     def call(self, request: ArmorDirectiveReq,
              timeout_s: Optional[float] = None) -> ArmorDirectiveRes:
@@ -105,13 +116,63 @@ class ArmorTransport:
         message = ArmorDirectiveList.Request(armor_requests=list(requests))
         return self._call(self._list, message, timeout_s)
 
+    def subscribe(self, request: ArmorDirectiveReq, timeout_s: Optional[float] = None) -> Any:
+        """Start a standing query on the node (armor_subscribe); its response."""
+        subscribe, _ = self._subscription_services()
+        return call_service(subscribe, ArmorSubscribe.Request(armor_request=request), timeout_s)
+
+    def unsubscribe(self, subscription_id: str, timeout_s: Optional[float] = None) -> Any:
+        """End a standing query (armor_unsubscribe); its response."""
+        _, unsubscribe = self._subscription_services()
+        return call_service(unsubscribe, ArmorUnsubscribe.Request(subscription_id=subscription_id),
+                            timeout_s)
+
+    def _subscription_services(self) -> Tuple[Any, Any]:
+        """The subscription services' clients, once armor_unsubscribe has answered.
+
+        Proved as the directive services are (_wait_until_answered), with an unsubscribe of
+        nothing, the one harmless request they take; again after the node went away (a
+        restarted node).
+        """
+        with self._subscription_lock:
+            if self._subscription_clients is None:
+                self._subscription_clients = (
+                    self.node.create_client(ArmorSubscribe, self._prefix + SUBSCRIBE_SERVICE,
+                                            qos_profile=SERVICE_QOS),
+                    self.node.create_client(ArmorUnsubscribe, self._prefix + UNSUBSCRIBE_SERVICE,
+                                            qos_profile=SERVICE_QOS))
+            subscribe, unsubscribe = self._subscription_clients
+            if unsubscribe.srv_name not in self._ready or not subscribe.service_is_ready():
+                hint = 'is an ARMOR node (of this version) running?'
+                if not subscribe.wait_for_service(timeout_sec=self._service_wait_s):
+                    raise self._unanswered(subscribe, hint)
+                self._wait_until_answered(unsubscribe, hint)
+            return self._subscription_clients
+
+    def node_identity(self) -> FrozenSet[bytes]:
+        """Which ARMOR node serves this namespace now, as far as the ROS graph tells.
+
+        The endpoints that publish its armor_changes topic: every ARMOR node has that publisher
+        from its start, and a restarted node has a new one. Read from this process's graph
+        cache: nothing is sent, and a node just started may show only a moment later.
+        """
+        return frozenset(bytes(info.endpoint_gid)
+                         for info in self.node.get_publishers_info_by_topic(self._change_topic))
+
+    def node_replaced(self) -> None:
+        """The node behind the services was replaced: prove each again before its next call."""
+        self._ready.clear()
+
     def close(self) -> None:
-        self.node.destroy_client(self._directive)
-        self.node.destroy_client(self._list)
         if self._owns_node:
+            # The spinner first: destroying clients its wait set may hold (in a context a
+            # caller's rclpy signal handler may already have shut down) could crash the exit.
             self._closing.set()
             self._executor.shutdown()
             self._spinner.join()
+        for client in (self._directive, self._list, *(self._subscription_clients or ())):
+            self.node.destroy_client(client)
+        if self._owns_node:
             self.node.destroy_node()
         if self._owns_context:
             rclpy.try_shutdown()
@@ -138,7 +199,8 @@ class ArmorTransport:
             self._ready.discard(client.srv_name)
             raise
 
-    def _wait_until_answered(self, client) -> None:
+    def _wait_until_answered(self, client,
+                             hint: str = 'is the ARMOR node running (armor serve)?') -> None:
         """Block until the service has answered a harmless request from this client.
 
         wait_for_service() only proves that requests reach the service. Fast DDS drops a
@@ -147,17 +209,22 @@ class ArmorTransport:
         unrecoverable, a lost answer to a read is simply asked again.
         """
         deadline = time.monotonic() + self._service_wait_s
-        harmless = (ArmorDirective.Request(armor_request=directive('', '', 'GET', 'ALL', 'REFS'))
-                    if client is self._directive else ArmorDirectiveList.Request())
+        harmless = (
+            ArmorDirective.Request(armor_request=directive('', '', 'GET', 'ALL', 'REFS'))
+            if client is self._directive else ArmorDirectiveList.Request() if client is self._list
+            else ArmorUnsubscribe.Request(subscription_id=''))
         while True:
             remaining = deadline - time.monotonic()
             if remaining <= 0 or not client.wait_for_service(timeout_sec=remaining):
-                raise ArmorServiceCallError(
-                    f'service {client.srv_name} did not answer within {self._service_wait_s:.0f}'
-                    ' s; is the ARMOR node running (armor serve)?')
+                raise self._unanswered(client, hint)
             try:
                 call_service(client, harmless, min(2.0, max(0.1, remaining)))
                 self._ready.add(client.srv_name)
                 return
             except ArmorServiceCallError:
                 continue
+
+    def _unanswered(self, client, hint: str) -> ArmorServiceCallError:
+        return ArmorServiceCallError(
+            f'service {client.srv_name} did not answer within {self._service_wait_s:.0f} s; '
+            f'{hint}')

@@ -3,7 +3,6 @@
 
 from types import SimpleNamespace
 
-from armor_client import subscriptions
 from armor_client.subscriptions import ChangeWatch, Subscription
 from armor_msgs.msg import ArmorAnswer, ArmorChange
 from armor_msgs.srv import ArmorSubscribe
@@ -41,7 +40,7 @@ def test_a_change_watch_of_one_reference_ignores_the_others():
     assert [(c.reference, c.revision) for c in received] == [('b', 1), ('b', 2)]
 
 
-def test_a_subscription_counts_missed_messages_and_keeps_its_answer(monkeypatch):
+def test_a_subscription_counts_missed_messages_and_keeps_its_answer():
     class Services:
         unsubscribed = []
 
@@ -51,9 +50,11 @@ def test_a_subscription_counts_missed_messages_and_keeps_its_answer(monkeypatch)
 
         def unsubscribe(self, subscription_id, timeout_s):
             self.unsubscribed.append(subscription_id)
-    monkeypatch.setattr(subscriptions, '_services', lambda transport: Services())
+    services = Services()
+    transport = _transport()
+    transport.subscribe, transport.unsubscribe = services.subscribe, services.unsubscribe
     changes = []
-    subscription = Subscription(_transport(), 'c', 'ref', 'QUERY IND CLASS OccupiedRoom',
+    subscription = Subscription(transport, 'c', 'ref', 'QUERY IND CLASS OccupiedRoom',
                                 changes.append)
 
     def message(sequence, revision, added=(), removed=()):

@@ -8,6 +8,7 @@ tests/integration/test_plugins.py.
 
 import inspect
 import json
+import warnings
 
 from armor_client import Armor
 from armor_client.aio import AsyncArmor
@@ -118,3 +119,66 @@ def test_an_async_reference_awaits_a_plugin_method():
             return await armor.reference('shop').shelves('Shelf')
 
     assert asyncio.run(run()) == ['b', 'a']
+
+
+class RestartingTransport(FakeTransport):
+    """A node that can be replaced by one with other plugins (another catalogue, identity)."""
+
+    def __init__(self, commands):
+        super().__init__()
+        self.commands, self.identity, self.catalogues_read, self.replaced = commands, 1, 0, 0
+
+    def restart(self, commands):
+        self.commands, self.identity = commands, self.identity + 1
+
+    def node_identity(self):
+        return frozenset({self.identity})
+
+    def node_replaced(self):
+        self.replaced += 1
+
+    def call(self, request, timeout_s=None):
+        if (request.command, request.primary_command_spec) == ('GET', 'CATALOGUE'):
+            self.catalogues_read += 1
+            return ArmorDirectiveRes(success=True, queried_objects=[json.dumps(
+                {**CATALOGUE, 'commands': self.commands})])
+        return super().call(request, timeout_s)
+
+
+STOCK, SHELVES = CATALOGUE['commands'][0], CATALOGUE['commands'][1]
+
+
+def test_a_node_restarted_with_other_plugins_is_learned_again_on_its_own():
+    transport = RestartingTransport([STOCK])
+    shop = Armor('t', transport=transport).reference('shop')
+    assert shop.stock('apple', 1) is None and transport.catalogues_read == 1
+    assert shop.stock('apple', 2) is None and transport.catalogues_read == 1, 'asked once'
+    # Restarted without the plugin of ADD STOCK, with the one of QUERY SHELVES.
+    transport.restart([SHELVES])
+    with pytest.raises(AttributeError, match='nor does a plugin of the node give one'):
+        shop.stock('apple', 3)
+    assert transport.catalogues_read == 2 and transport.replaced == 1
+    assert 'stock' not in dir(shop) and shop.shelves('Shelf') == ['b', 'a']
+    # Restarted with both: a name it lacks is learned again without learn_plugin_methods().
+    transport.restart([STOCK, SHELVES])
+    assert shop.stock('pear', 4) is None and transport.catalogues_read == 3
+    assert [sent[1:] for sent in transport.sent] == [
+        ('ADD', 'STOCK', ['apple', '1']), ('ADD', 'STOCK', ['apple', '2']),
+        ('QUERY', 'SHELVES', ['Shelf']), ('ADD', 'STOCK', ['pear', '4'])]
+
+
+def test_a_method_written_by_hand_for_a_plugin_command_keeps_its_name_without_a_warning():
+    planner = _command('QUERY PDDL PROBLEM', 'query', ['mapping path or text'],
+                       _face('pddl_problem', 'expressions', ('mapping', 'string')),
+                       origin='armor-pddl.jar')
+    other = _command('QUERY OTHER PROBLEM', 'query', ['mapping path or text'],
+                     _face('pddl_problem', 'expressions', ('mapping', 'string')))
+    transport = RestartingTransport([planner])
+    armor = Armor('t', transport=transport)
+    with warnings.catch_warnings():
+        warnings.simplefilter('error')
+        learned = armor.learn_plugin_methods()
+    assert learned.added == {} and learned.refused == {}
+    transport.restart([other])
+    with pytest.warns(RuntimeWarning, match='Reference already has pddl_problem'):
+        assert 'QUERY OTHER PROBLEM' in armor.learn_plugin_methods().refused

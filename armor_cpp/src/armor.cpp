@@ -22,16 +22,6 @@ std::string word(std::string_view text) {return std::string(text);}
 
 std::string flag(bool value) {return value ? "true" : "false";}
 
-// A path argument as it is sent (docs/commands.md#paths): a relative one is the caller's, so
-// it is joined to this process's working directory; the node refuses relative paths.
-std::string node_path(const std::string & path)
-{
-  if (path.empty() || std::filesystem::path(path).is_absolute()) {
-    return path;
-  }
-  return (std::filesystem::current_path() / path).string();
-}
-
 // The arguments of CREATE, which are also the last four of LOAD FILE and LOAD WEB.
 std::vector<std::string> reasoning_args(const std::string & iri, const ReasonerOptions & options)
 {
@@ -74,6 +64,18 @@ std::optional<Value> sparql_cell(const std::string & text, bool iris)
 }
 
 }  // namespace
+
+// The node refuses relative paths: a relative one is the caller's, joined to this process's
+// working directory.
+std::string path_argument(const std::string & path)
+{
+  if (path.empty() || path.find('\n') != std::string::npos || path.rfind('{', 0) == 0 ||
+    std::filesystem::path(path).is_absolute())
+  {
+    return path;
+  }
+  return (std::filesystem::current_path() / path).string();
+}
 
 // ---------------------------------------------------------------- Armor
 
@@ -142,7 +144,7 @@ Reference Armor::load_file(
   Reference loaded = reference(name);
   loaded.consistent_from(execute(name,
     options.mount ? contract::LOAD_FILE_MOUNTED : contract::LOAD_FILE,
-    load_args(node_path(path), iri, options)));
+    load_args(path_argument(path), iri, options)));
   return loaded;
 }
 
@@ -225,7 +227,7 @@ void Armor::log_to_screen(bool on) const
 void Armor::log_to_file(const std::optional<std::string> & path) const
 {
   if (path) {
-    execute("", contract::LOG_FILE_ON, {node_path(*path)});
+    execute("", contract::LOG_FILE_ON, {path_argument(*path)});
   } else {
     execute("", contract::LOG_FILE_OFF, {});
   }
@@ -432,9 +434,9 @@ void Reference::save(const std::string & path, const std::string & format, bool 
 {
   std::vector<std::string> args;
   if (!format.empty()) {
-    args = {node_path(path), format};
+    args = {path_argument(path), format};
   } else if (!path.empty()) {
-    args = {node_path(path)};
+    args = {path_argument(path)};
   }
   answer(inferences ? contract::SAVE_INFERENCE : contract::SAVE, args);
 }

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "armor_cpp/armor.hpp"
+#include "armor_cpp/plugins.hpp"
 #include "armor_cpp/rcl_transport.hpp"
 #include "armor_cpp/scenes.hpp"
 
@@ -340,7 +341,29 @@ TEST(Scenes, ASceneIsLearnedThenRecognised)
     armor::learn_scene(table, {{"SPHERE", {0, std::nan(""), 0}}, {"SPHERE", {1, 1, 1}}}, 0.9),
     armor::ArgumentError);
   EXPECT_EQ(table.subclasses("SCENE"), Names{"SCENE-1"});
+  // QUERY SIT SCENES through its generated method (plugins.hpp): one JSON object, SCENE-1's.
+  Names classes = armor::plugins::Reference(table).scene_classes();
+  ASSERT_EQ(classes.size(), 1u);
+  EXPECT_NE(classes[0].find("\"SCENE-1\""), std::string::npos) << classes[0];
   table.drop();
+}
+
+// The PDDL plugin (loaded by every node by default) through the method plugins.hpp generates
+// from its catalogue entry: the same problem as the raw directive, and the reasoner's
+// conclusions in it (OccupiedRoom is inferred); the mapping given as text.
+TEST_F(LiveReference, APluginsQueryAnswersThroughItsGeneratedMethod)
+{
+  std::ifstream file(environment("ARMOR_TEST_PDDL_MAPPING"));
+  std::stringstream mapping;
+  mapping << file.rdbuf();
+  armor::plugins::Reference planner = *ref_;
+  Names problem = planner.pddl_problem(mapping.str());
+  ASSERT_EQ(problem.size(), 1u);
+  EXPECT_EQ(problem, armor_.call(name_, "QUERY", "PDDL", "PROBLEM", {mapping.str()}).queried_objects);
+  EXPECT_NE(problem[0].find("(problem check-occupied-rooms)"), std::string::npos) << problem[0];
+  EXPECT_NE(problem[0].find("(visited "), std::string::npos) << problem[0];
+  // The built-in methods are armor::Reference's, on the same reference.
+  EXPECT_EQ(planner.instances("Robot"), ref_->instances("Robot"));
 }
 
 }  // namespace

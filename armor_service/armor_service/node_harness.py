@@ -9,7 +9,13 @@ import signal
 import subprocess
 import sys
 import time
-from typing import Mapping, Optional, Sequence
+from typing import List, Mapping, Optional, Sequence
+
+
+def default_jvm_options() -> List[str]:
+    """The node's default jvm_options, for harnesses that add options of their own to it."""
+    from armor_service.parameters import NODE_PARAMETERS
+    return list(next(p.default for p in NODE_PARAMETERS if p.name == 'jvm_options'))
 
 
 class ArmorNodeProcess:

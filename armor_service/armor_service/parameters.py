@@ -134,7 +134,9 @@ NODE_PARAMETERS: Tuple[Parameter, ...] = (
     Parameter('jvm_options', 'string_array',
               ['-Xmx4g', '-XX:+UseSerialGC', '-XX:+ExitOnOutOfMemoryError'],
               'options of the core JVM, as a string array or one string split as a shell does; '
-              'out of memory restarts the core', also_string=option_list),
+              'out of memory restarts the core; an -Xshare or -XX:SharedArchiveFile option '
+              "replaces the class archive beside the jar (armor-core.jsa, made by make setup)",
+              also_string=option_list),
     Parameter('executor_threads', 'integer', 16, 'directives answered at once'),
     Parameter('preload_file', 'string', '', 'ontology loaded at start and after a core restart'),
     Parameter('preload_reference', 'string', 'default',

@@ -2,9 +2,11 @@
 """Fixtures that start the real ARMOR node as a separate process and call it over ROS 2."""
 
 import fcntl
+import json
 import os
 import pathlib
 import random
+import subprocess
 import threading
 import time
 
@@ -121,6 +123,23 @@ def iris(*names: str) -> list:
     return sorted(iri(n) for n in names)
 
 
+C1_ALONE = ['-XX:TieredStopAtLevel=1']
+# The benchmarks the suite runs (bench/harness.py) add it to their nodes' options too.
+os.environ.setdefault('ARMOR_BENCH_EXTRA_JVM_OPTIONS', json.dumps(C1_ALONE))
+
+
+def suite_jvm_options() -> list:
+    """The node's default JVM options, with the JIT's C1 compiler alone.
+
+    The suite's cores live for seconds to a minute: the optimising compiler (C2) spent more than
+    half of their CPU time compiling code they did not run long enough to pay it back (four test
+    files: 84 CPU-s in the cores with it, 43 without; the SOMA test 82 CPU-s either way).
+    Robots keep the default; a test's own jvm_options come later and replace these.
+    """
+    from armor_service.node_harness import default_jvm_options
+    return [*default_jvm_options(), *C1_ALONE]
+
+
 def start_node(scratch: pathlib.Path, *ros_args: str, namespace: str = '', **process):
     """A node preloading robotics.owl as "robotics", reading and writing in scratch only.
 
@@ -134,12 +153,25 @@ def start_node(scratch: pathlib.Path, *ros_args: str, namespace: str = '', **pro
         ros_args = (*ros_args, '-r', f'__ns:={namespace}')
     from armor_service.node_harness import ArmorNodeProcess
     node = ArmorNodeProcess(scratch / 'armor_service.log', [
+        '-p', f'jvm_options:={json.dumps(suite_jvm_options())}',
         '-p', f'preload_file:={ONTOLOGIES / "robotics.owl"}', '-p', 'preload_reference:=robotics',
         '-p', f'allowed_dirs:=["{ONTOLOGIES}", "{TEST_ONTOLOGIES}", "{scratch}"]',
         '-p', f'write_dirs:={scratch}', '-p', f'state_dir:={scratch / "state"}', *ros_args],
         cwd=_made(scratch / 'cwd'), **process)
     node.scratch = scratch
     return node
+
+
+def cmake_built(folder: pathlib.Path, program: str) -> pathlib.Path:
+    """A C++ program built from folder's CMakeLists.txt as a user builds it; its path.
+
+    find_package(armor_cpp) finds install/armor_cpp through the environment of install/setup.bash.
+    """
+    for step in (['cmake', '-S', str(folder), '-B', str(folder / 'build')],
+                 ['cmake', '--build', str(folder / 'build')]):
+        built = subprocess.run(step, capture_output=True, text=True, timeout=600)
+        assert built.returncode == 0, built.stdout[-3000:] + built.stderr[-3000:]
+    return folder / 'build' / program
 
 
 def _made(folder: pathlib.Path) -> pathlib.Path:

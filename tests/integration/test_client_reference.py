@@ -7,15 +7,17 @@ afterwards, so tests neither see nor disturb each other or the preloaded "roboti
 
 import pathlib
 import re
+import shutil
 import time
 
 from armor_client import (Armor, ArmorArgumentError, ArmorCallTimeout, ArmorFileError,
                           ArmorMountError, ArmorServiceCallError, ArmorUnknownReferenceError,
                           Characteristic, Reasoner)
-from conftest import NS, ONTOLOGIES
+from conftest import NS, ONTOLOGIES, REPO
 import pytest
 
 ROBOTICS = str(ONTOLOGIES / 'robotics.owl')
+LUBM_DEPARTMENT = REPO / 'bench' / 'data' / 'lubm' / 'university0-department0.owl'
 OWL_THING = '<http://www.w3.org/2002/07/owl#Thing>'
 
 
@@ -385,13 +387,22 @@ def test_logging_to_the_screen_logs_while_on(session, armor, armor_node):
     assert '[not_logged_on_screen]' not in text
 
 
-def test_raw_calls_and_time_limits(session, armor):
+def test_raw_calls_and_time_limits(session, armor, armor_node):
     response = session.call('robotics', 'QUERY', 'IND', 'CLASS', ['Robot'])
     assert response.success and list(response.queried_objects) == [f'<{NS}robot1>']
     assert not session.call('nowhere', 'QUERY', 'IND', 'CLASS', ['Robot']).success
-    impatient = Armor('impatient', transport=armor, timeout_s=1e-6)
+    # A LOAD that parses 700 KB cannot answer within 50 ms; a quick query could, since the
+    # spinner thread may take the answer in before the caller even starts waiting.
+    department = armor_node.scratch / 'impatient-department.owl'
+    shutil.copy2(LUBM_DEPARTMENT, department)
+    impatient = Armor('impatient', transport=armor, timeout_s=0.05)
     with pytest.raises(ArmorCallTimeout):
-        impatient.references()
+        impatient.load_file('impatient_load', department)
+    deadline = time.monotonic() + 120
+    while 'impatient_load' not in session.references():
+        assert time.monotonic() < deadline, 'the LOAD whose answer was not awaited never ended'
+        time.sleep(0.2)
+    session.reference('impatient_load').drop()
 
 
 def test_no_service_is_a_call_error():

@@ -14,7 +14,7 @@ import subprocess
 import xml.etree.ElementTree as ET
 
 from armor_client import Armor
-from conftest import ONTOLOGIES, REPO
+from conftest import cmake_built, ONTOLOGIES, REPO
 import pytest
 
 BUILD = REPO / 'build' / 'armor_cpp'
@@ -46,7 +46,8 @@ def live_results(armor, armor_node, tmp_path_factory):
     """
     report = tmp_path_factory.mktemp('gtest') / 'live.xml'
     env = {**os.environ, 'ARMOR_TEST_ONTOLOGY': str(ONTOLOGIES / 'robotics.owl'),
-           'ARMOR_TEST_SCRATCH': str(armor_node.scratch)}
+           'ARMOR_TEST_SCRATCH': str(armor_node.scratch),
+           'ARMOR_TEST_PDDL_MAPPING': str(REPO / 'examples' / 'pddl' / 'robotics-mapping.yaml')}
     done = subprocess.run([str(LIVE_TEST), f'--gtest_output=xml:{report}'], env=env,
                           capture_output=True, text=True, timeout=600)
     assert report.exists(), done.stdout[-3000:] + done.stderr[-3000:]
@@ -79,11 +80,7 @@ def test_the_docs_program_is_the_example_and_builds_with_the_projects_cmake(armo
     assert program == (EXAMPLES / 'query_rooms.cpp').read_text()
     (tmp_path / 'query_rooms.cpp').write_text(program)
     (tmp_path / 'CMakeLists.txt').write_text(cmake)
-    for step in (['cmake', '-S', str(tmp_path), '-B', str(tmp_path / 'build')],
-                 ['cmake', '--build', str(tmp_path / 'build')]):
-        built = subprocess.run(step, capture_output=True, text=True, timeout=300)
-        assert built.returncode == 0, built.stdout[-3000:] + built.stderr[-3000:]
-    ran = subprocess.run([str(tmp_path / 'build' / 'query_rooms')], capture_output=True,
+    ran = subprocess.run([str(cmake_built(tmp_path, 'query_rooms'))], capture_output=True,
                          text=True, timeout=120)
     assert ran.returncode == 0, ran.stderr
     occupied = Armor('cpp_docs_check', transport=armor).reference('robotics').instances(

@@ -7,13 +7,13 @@ query after a change sees it.
 """
 
 import json
-import pathlib
 import shutil
 
+from conftest import REPO
 from test_contract_support import answer, succeeded
 from test_contract_support import load  # noqa: F401 (fixture)
 
-LUBM = pathlib.Path(__file__).resolve().parents[2] / 'bench' / 'data' / 'lubm'
+LUBM = REPO / 'bench' / 'data' / 'lubm'
 DEPARTMENT = 'http://www.Department0.University0.edu'
 UB = 'http://swat.cse.lehigh.edu/onto/univ-bench.owl#'
 

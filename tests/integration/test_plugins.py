@@ -23,7 +23,7 @@ import zipfile
 
 from armor_client import Armor, ArmorTransport, commands, directive
 from armor_client.aio import AsyncArmor
-from conftest import iri, iris, ONTOLOGIES, REPO, start_node
+from conftest import cmake_built, iri, iris, ONTOLOGIES, REPO, start_node
 import pytest
 
 LIMIT_MS = 1500
@@ -407,3 +407,103 @@ def test_without_the_plugin_the_factory_class_is_unknown(call):
     refused = call('nope', 'LOAD FILE', str(ONTOLOGIES / 'robotics.owl'), '', 'false',
                    'marks.TinyReasonerFactory', 'false')
     assert refused.exit_code == 210 and 'plugin_dirs' in refused.error_description
+
+
+def _serving(armor, namespace, before, wait_s=90.0):
+    """Wait until a node serves the namespace and the session's graph shows one not ``before``."""
+    probe = ArmorTransport(namespace=namespace, service_wait_s=wait_s)
+    try:
+        assert probe.call(directive('t', '', 'GET', 'ALL', 'REFS'), timeout_s=120).success
+    finally:
+        probe.close()
+    deadline = time.monotonic() + wait_s
+    while armor.transport.node_identity() in (before, frozenset()):
+        assert time.monotonic() < deadline, 'the restarted node never showed in the ROS graph'
+        time.sleep(0.2)
+    return armor.transport.node_identity()
+
+
+def test_a_session_learns_again_when_the_node_restarts_with_other_plugins(tmp_path):
+    """Issue 30: no learn_plugin_methods() call; the node's restart is noticed by the session."""
+    hello = build_example(tmp_path / 'hello')
+    namespace = '/plugged_restart'
+
+    def node_with(name, *plugins):
+        dirs = ['-p', f'plugin_dirs:={":".join(map(str, plugins))}'] if plugins else []
+        return start_node(tmp_path / name, *dirs, '-p', 'installed_plugins:=false',
+                          namespace=namespace)
+
+    node = node_with('first', hello)
+    try:
+        with Armor('restart', namespace=namespace, service_wait_s=90.0) as armor:
+            first = _serving(armor, namespace, None)
+            robotics = armor.reference('robotics')
+            assert robotics.greeted() == []  # learned from the first node
+            node.stop()
+            node = node_with('second')  # the same namespace, without the plugin
+            _serving(armor, namespace, first)
+            with pytest.raises(AttributeError, match='nor does a plugin of the node give one'):
+                robotics.greeted()
+            assert 'greet' not in dir(robotics)
+            second = armor.transport.node_identity()
+            node.stop()
+            node = node_with('third', hello)  # and with it again
+            _serving(armor, namespace, second)
+            robotics.greet('kitchen')
+            assert robotics.greeted() == ['kitchen']
+    finally:
+        node.stop()
+
+
+HELLO_PROGRAM = r'''
+#include <iostream>
+#include "hello_faces.hpp"
+int main()
+{
+  armor::Options options;
+  options.ns = "/plugged";
+  options.service_wait = std::chrono::seconds(90);
+  options.timeout = std::chrono::seconds(120);
+  armor::Armor armor("hello_cpp", options);
+  hello::Reference robotics = armor.reference("robotics");
+  robotics.greet("bedroom");                            // ADD GREETING, a plugin's change
+  robotics.batch().greet("kitchen").add_individual("hall").send();  // beside a built-in one
+  for (const std::string & name : robotics.greeted()) {  // QUERY GREETING: ENTITIES
+    std::cout << name << "\n";
+  }
+  std::cout << robotics.sleep_for(5).size() << " " << robotics.instances("Greeted").size() << "\n";
+}
+'''
+HELLO_CMAKE = '''cmake_minimum_required(VERSION 3.8)
+project(hello_client LANGUAGES CXX)
+find_package(armor_cpp REQUIRED)
+add_executable(hello_client hello_client.cpp)
+target_include_directories(hello_client PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+target_link_libraries(hello_client armor_cpp::armor_cpp)
+'''
+
+
+def test_a_plugin_users_cpp_header_is_generated_from_the_nodes_catalogue(plugged, tmp_path):
+    """Issue 30: docs/extending.md's commands give a C++ program the plugin's typed methods."""
+    _, armor = plugged
+    catalogue = subprocess.run(['armor', 'call', '--namespace', '/plugged', '--no-relay', '--raw',
+                                '-', 'GET', 'CATALOGUE'], capture_output=True, text=True,
+                               timeout=180, check=True).stdout
+    made = subprocess.run([sys.executable, str(REPO / 'tools' / 'faces.py'), '--cpp-plugins', '-',
+                           '--namespace', 'hello', '--output', str(tmp_path / 'hello_faces.hpp')],
+                          input=catalogue, capture_output=True, text=True, timeout=60)
+    assert made.returncode == 0, made.stderr
+    # A face whose name the client has gets no method, as in Python.
+    assert 'QUERY MARK CLASH (plugin marks.jar) gets no C++ method instances()' in made.stderr
+    (tmp_path / 'hello_client.cpp').write_text(HELLO_PROGRAM)
+    (tmp_path / 'CMakeLists.txt').write_text(HELLO_CMAKE)
+    program = cmake_built(tmp_path, 'hello_client')
+    try:
+        ran = subprocess.run([str(program)], capture_output=True, text=True, timeout=300)
+        assert ran.returncode == 0, ran.stderr
+        assert ran.stdout.splitlines() == ['bedroom', 'kitchen', '1 2'], ran.stdout
+        assert greeted(armor) == iris('bedroom', 'kitchen')
+    finally:
+        for room in ('kitchen', 'bedroom'):
+            send(armor, 'robotics', 'REMOVE IND CLASS', room, 'Greeted')
+        send(armor, 'robotics', 'REMOVE IND', 'hall')

@@ -58,7 +58,12 @@ def limited(tmp_path_factory):
         return response, (time.monotonic() - start) * 1000
 
     created, _ = call('CREATE', IRI, 'true', 'JFACT', 'true')
-    assert created.success, (created.exit_code, created.error_description, node.log())
+    # Even an empty ontology's first reasoning can pass the 1-s limit while JFact's classes load
+    # on a busy machine (seen once in CI): the reference is made all the same, and says so.
+    made_anyway = created.exit_code == 211 and 'is loaded but its first reasoning was stopped' \
+        in created.error_description
+    assert created.success or made_anyway, (created.exit_code, created.error_description,
+                                            node.log())
     requests = [directive('test', 'slow', *words) for words in _ontology()]
     built = armor.call_list(requests, timeout_s=600)
     assert built.success, [r.error_description for r in built.armor_responses if not r.success][:1]

@@ -79,20 +79,31 @@ def test_a_client_that_got_216_learns_from_the_change_history_what_to_send_again
     armor = Armor('retrying', transport=transport, timeout_s=120)
     ref = armor.create('retried', 'http://example.org/retried', reasoner=Reasoner.PELLET)
     before = ref.revision()
-    names = [f'marker{i}' for i in range(400)]
+    names = []
     unanswered = []
+    killed = threading.Event()
 
     def send_all():
-        for name in names:
+        # Back to back until a few after the kill: a fixed number of directives could all be
+        # answered before the kill on a fast core (400 were, once).
+        after_kill = 0
+        for i in range(20_000):
+            if killed.is_set():
+                after_kill += 1
+                if after_kill > 20:
+                    return
+            names.append(f'marker{i}')
             try:
-                ref.add_individual_to_class(name, 'Marker')
+                ref.add_individual_to_class(names[-1], 'Marker')
             except ArmorCoreUnavailableError:
-                unanswered.append(name)
+                unanswered.append(names[-1])
 
     sender = threading.Thread(target=send_all)
     sender.start()
-    time.sleep(0.5)
+    while len(names) < 20 and sender.is_alive():
+        time.sleep(0.01)
     os.kill(node.core_pid(), signal.SIGKILL)
+    killed.set()
     sender.join(timeout=300)
     assert unanswered, 'the kill came too late: no directive was answered 216'
 

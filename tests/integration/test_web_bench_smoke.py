@@ -29,7 +29,10 @@ def test_the_web_view_benchmark_runs_and_reports_every_figure(tmp_path):
     results = json.loads(figures.read_text())
     assert results['latency']['from_send']['n'] == 5
     latency = results['latency']
-    assert 0 < latency['from_ack']['p50_ms'] <= latency['from_send']['p50_ms']
+    # The page may show a change before its answer is back at the client (the change event
+    # and the answer travel separately): after the answer may be below 0 ms, after the send not.
+    assert latency['from_ack']['p50_ms'] <= latency['from_send']['p50_ms']
+    assert latency['from_send']['p50_ms'] > 0
     for command in ('QUERY', 'REPLACE'):
         assert results['cost'][command]['with']['calls'] > 0
         assert results['cost'][command]['p50_ratio'] > 0

@@ -4,7 +4,7 @@
 from playwright.sync_api import expect
 # The web view's own fixtures (a node with its web port, a browser, a page) and helpers.
 from test_web_view import browser, page, web_node  # noqa: F401
-from test_web_view import load, open_reference
+from test_web_view import ARTIFACTS, load, open_reference
 
 LABEL = '<http://www.w3.org/2000/01/rdf-schema#label>'
 NS = 'http://www.example.org/robotics#'
@@ -39,6 +39,8 @@ def test_an_inferred_type_and_value_say_why_with_linked_names_and_a_sentence(web
         'individual', NS + 'kitchen')
     room = box.locator('a.entity', has_text='Room').first
     assert (room.get_attribute('data-kind'), room.get_attribute('data-iri')) == ('class', NS + 'Room')
+    # What docs/explanations.md shows (docs/images/web-view-why.png is copied from it).
+    detail.screenshot(path=str(ARTIFACTS / 'web-view-why.png'))
 
 
 def test_an_inferred_property_value_says_why(web_node, page):

@@ -93,10 +93,8 @@ def main(argv=None) -> int:
 def _end_on_sigterm() -> None:
     """SIGTERM ends a verb as Ctrl-C does (`timeout 60 armor call ...` must end at 60 s).
 
-    rclpy.init() installs its own SIGTERM handler, which shuts ROS down and then calls the
-    handler that was there before only if that is a function: with the default action there, a
-    verb waiting for an answer was left waiting forever. Installed before any verb starts ROS,
-    this handler is the one rclpy calls; it leaves through SystemExit, so `with` blocks close.
+    The verbs start ROS without rclpy's signal handlers (ArmorTransport, the relay, watch):
+    this handler leaves through SystemExit, so `with` blocks close the transport in order.
     """
     def terminate(signum, frame):
         raise SystemExit(128 + signum)

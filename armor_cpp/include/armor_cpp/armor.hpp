@@ -270,20 +270,24 @@ public:
   // A builder for changes sent together as one atomic list.
   Batch batch() const;
 
-private:
-  friend class ManipulationFaces<Reference>;
-  friend class QueryFaces<Reference>;
-  friend class Armor;
-  void consistent_from(const armor_msgs::msg::ArmorDirectiveRes & response) const;
+protected:
+  // What generated methods call: the core's (faces.hpp) and plugins' (tools/faces.py
+  // --cpp-plugins, whose Reference derives from this one).
   void send_change(const contract::Command & command, const std::vector<std::string> & args);
-  armor_msgs::msg::ArmorDirectiveRes answer(
-    const contract::Command & command, const std::vector<std::string> & args) const;
-  // The answer shapes of the generated queries (faces.hpp).
+  // The answer shapes of the generated queries.
   std::vector<std::string> entities(
     const contract::Command & command, const std::vector<std::string> & args) const;
   std::vector<Value> values(
     const contract::Command & command, const std::vector<std::string> & args) const;
   std::vector<std::string> expressions(
+    const contract::Command & command, const std::vector<std::string> & args) const;
+
+private:
+  friend class Changes<Reference>;
+  friend class QueryFaces<Reference>;
+  friend class Armor;
+  void consistent_from(const armor_msgs::msg::ArmorDirectiveRes & response) const;
+  armor_msgs::msg::ArmorDirectiveRes answer(
     const contract::Command & command, const std::vector<std::string> & args) const;
 
   struct State;
@@ -310,15 +314,22 @@ public:
   // index() and responses() set.
   bool send();
 
-private:
-  friend class ManipulationFaces<Batch>;
+protected:
   Batch & send_change(const contract::Command & command, const std::vector<std::string> & args);
+
+private:
+  friend class Changes<Batch>;
 
   Armor armor_;
   std::string reference_;
   std::vector<armor_msgs::msg::ArmorDirectiveReq> requests_;
   std::optional<bool> consistent_;
 };
+
+// A path argument as every method here sends it (docs/commands.md#paths): a relative path is
+// this process's, made absolute; '' and text given instead of a file (holding a line break or
+// starting with '{', as a PDDL mapping) are sent as they are.
+std::string path_argument(const std::string & path);
 
 // Fill a batch and send it as one atomic list, unless `fill` throws (then nothing is sent):
 // the Python client's `with ref.batch() as batch:`. The consistency after the list; empty

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "armor_cpp/changes.hpp"
 #include "armor_cpp/contract.hpp"
 #include "armor_cpp/values.hpp"
 
@@ -19,175 +20,160 @@ namespace armor
 {
 
 template<typename Derived>
-class ManipulationFaces
+class ManipulationFaces : public Changes<Derived>
 {
 public:
   // Apply the buffered manipulations (APPLY).
   decltype(auto) apply()
-  {return change<contract::APPLY>();}
+  {return this->template change<contract::APPLY>();}
   // Apply the buffer and update the reasoner (REASON).
   decltype(auto) reason()
-  {return change<contract::REASON>();}
+  {return this->template change<contract::REASON>();}
   // Declare an individual (ADD IND).
   decltype(auto) add_individual(const std::string & individual)
-  {return change<contract::ADD_IND>(individual);}
+  {return this->template change<contract::ADD_IND>(individual);}
   // Declare a class (ADD CLASS).
   decltype(auto) add_class(const std::string & cls)
-  {return change<contract::ADD_CLASS>(cls);}
+  {return this->template change<contract::ADD_CLASS>(cls);}
   // Class SubClassOf prop min n value class (ADD CARDINALITY MIN).
   decltype(auto) add_min_cardinality(
     const std::string & cls, const std::string & prop, int count, const std::string & value_class)
-  {return change<contract::ADD_CARDINALITY_MIN>(cls, prop, std::to_string(count), value_class);}
+  {return this->template change<contract::ADD_CARDINALITY_MIN>(
+    cls, prop, std::to_string(count), value_class);}
   // Assert that the individuals are different (DISJOINT IND).
   decltype(auto) make_individuals_different(const std::vector<std::string> & individuals)
-  {return change_all<contract::DISJOINT_IND>(individuals);}
+  {return this->template change_all<contract::DISJOINT_IND>(individuals);}
   // Assert that the classes are disjoint (DISJOINT CLASS).
   decltype(auto) make_classes_disjoint(const std::vector<std::string> & classes)
-  {return change_all<contract::DISJOINT_CLASS>(classes);}
+  {return this->template change_all<contract::DISJOINT_CLASS>(classes);}
   // Make all instances of the class different from each other (DISJOINT IND CLASS).
   decltype(auto) make_instances_different(const std::string & cls)
-  {return change<contract::DISJOINT_IND_CLASS>(cls);}
+  {return this->template change<contract::DISJOINT_IND_CLASS>(cls);}
   // Make the direct subclasses of the class disjoint (DISJOINT CLASS CLASS).
   decltype(auto) make_subclasses_disjoint(const std::string & cls)
-  {return change<contract::DISJOINT_CLASS_CLASS>(cls);}
+  {return this->template change<contract::DISJOINT_CLASS_CLASS>(cls);}
   // Turn its SubClassOf axioms into one EquivalentClasses (MAKE EQUIVALENT CLASS).
   decltype(auto) make_equivalent_to_superclasses(const std::string & cls)
-  {return change<contract::MAKE_EQUIVALENT_CLASS>(cls);}
+  {return this->template change<contract::MAKE_EQUIVALENT_CLASS>(cls);}
   // Remove every axiom that mentions the individual (REMOVE IND).
   decltype(auto) remove_individual(const std::string & individual)
-  {return change<contract::REMOVE_IND>(individual);}
+  {return this->template change<contract::REMOVE_IND>(individual);}
   // Remove every axiom that mentions the class (REMOVE CLASS).
   decltype(auto) remove_class(const std::string & cls)
-  {return change<contract::REMOVE_CLASS>(cls);}
+  {return this->template change<contract::REMOVE_CLASS>(cls);}
   // Replace one related individual by another (REPLACE OBJECTPROP IND).
   decltype(auto) replace_object_value(
     const std::string & prop, const std::string & individual, const std::string & new_name,
     const std::string & old_name)
-  {return change<contract::REPLACE_OBJECTPROP_IND>(prop, individual, new_name, old_name);}
+  {return this->template change<contract::REPLACE_OBJECTPROP_IND>(
+    prop, individual, new_name, old_name);}
   // Assert that the individual belongs to the class (ADD IND CLASS).
   decltype(auto) add_individual_to_class(const std::string & individual, const std::string & cls)
-  {return change<contract::ADD_IND_CLASS>(individual, cls);}
+  {return this->template change<contract::ADD_IND_CLASS>(individual, cls);}
   // Remove that class assertion (REMOVE IND CLASS).
   decltype(auto) remove_individual_from_class(
     const std::string & individual, const std::string & cls)
-  {return change<contract::REMOVE_IND_CLASS>(individual, cls);}
+  {return this->template change<contract::REMOVE_IND_CLASS>(individual, cls);}
   // Assert that sub is a subclass of super (ADD CLASS CLASS).
   decltype(auto) add_subclass(const std::string & subclass, const std::string & superclass)
-  {return change<contract::ADD_CLASS_CLASS>(subclass, superclass);}
+  {return this->template change<contract::ADD_CLASS_CLASS>(subclass, superclass);}
   // Remove that SubClassOf axiom (REMOVE CLASS CLASS).
   decltype(auto) remove_subclass(const std::string & subclass, const std::string & superclass)
-  {return change<contract::REMOVE_CLASS_CLASS>(subclass, superclass);}
+  {return this->template change<contract::REMOVE_CLASS_CLASS>(subclass, superclass);}
   // Relate the individual to another (ADD OBJECTPROP IND).
   decltype(auto) add_object_value(
     const std::string & prop, const std::string & individual, const std::string & value)
-  {return change<contract::ADD_OBJECTPROP_IND>(prop, individual, value);}
+  {return this->template change<contract::ADD_OBJECTPROP_IND>(prop, individual, value);}
   // Remove that relation (REMOVE OBJECTPROP IND).
   decltype(auto) remove_object_value(
     const std::string & prop, const std::string & individual, const std::string & value)
-  {return change<contract::REMOVE_OBJECTPROP_IND>(prop, individual, value);}
+  {return this->template change<contract::REMOVE_OBJECTPROP_IND>(prop, individual, value);}
   // Assert an object sub-property (ADD OBJECTPROP OBJECTPROP).
   decltype(auto) add_object_subproperty(
     const std::string & subproperty, const std::string & superproperty)
-  {return change<contract::ADD_OBJECTPROP_OBJECTPROP>(subproperty, superproperty);}
+  {return this->template change<contract::ADD_OBJECTPROP_OBJECTPROP>(subproperty, superproperty);}
   // Remove that sub-property axiom (REMOVE OBJECTPROP OBJECTPROP).
   decltype(auto) remove_object_subproperty(
     const std::string & subproperty, const std::string & superproperty)
-  {return change<contract::REMOVE_OBJECTPROP_OBJECTPROP>(subproperty, superproperty);}
+  {return this->template change<contract::REMOVE_OBJECTPROP_OBJECTPROP>(
+    subproperty, superproperty);}
   // Assert a data sub-property (ADD DATAPROP DATAPROP).
   decltype(auto) add_data_subproperty(
     const std::string & subproperty, const std::string & superproperty)
-  {return change<contract::ADD_DATAPROP_DATAPROP>(subproperty, superproperty);}
+  {return this->template change<contract::ADD_DATAPROP_DATAPROP>(subproperty, superproperty);}
   // Remove that sub-property axiom (REMOVE DATAPROP DATAPROP).
   decltype(auto) remove_data_subproperty(
     const std::string & subproperty, const std::string & superproperty)
-  {return change<contract::REMOVE_DATAPROP_DATAPROP>(subproperty, superproperty);}
+  {return this->template change<contract::REMOVE_DATAPROP_DATAPROP>(subproperty, superproperty);}
   // Assert that two object properties are inverses (ADD OBJECTPROP INVERSE).
   decltype(auto) add_inverse_property(const std::string & prop, const std::string & inverse)
-  {return change<contract::ADD_OBJECTPROP_INVERSE>(prop, inverse);}
+  {return this->template change<contract::ADD_OBJECTPROP_INVERSE>(prop, inverse);}
   // Remove that inverse axiom (REMOVE OBJECTPROP INVERSE).
   decltype(auto) remove_inverse_property(const std::string & prop, const std::string & inverse)
-  {return change<contract::REMOVE_OBJECTPROP_INVERSE>(prop, inverse);}
+  {return this->template change<contract::REMOVE_OBJECTPROP_INVERSE>(prop, inverse);}
   // Object property domain (ADD OBJECTPROP DOMAIN).
   decltype(auto) add_object_domain(const std::string & prop, const std::string & cls)
-  {return change<contract::ADD_OBJECTPROP_DOMAIN>(prop, cls);}
+  {return this->template change<contract::ADD_OBJECTPROP_DOMAIN>(prop, cls);}
   // Remove that domain (REMOVE OBJECTPROP DOMAIN).
   decltype(auto) remove_object_domain(const std::string & prop, const std::string & cls)
-  {return change<contract::REMOVE_OBJECTPROP_DOMAIN>(prop, cls);}
+  {return this->template change<contract::REMOVE_OBJECTPROP_DOMAIN>(prop, cls);}
   // Object property range (ADD OBJECTPROP RANGE).
   decltype(auto) add_object_range(const std::string & prop, const std::string & cls)
-  {return change<contract::ADD_OBJECTPROP_RANGE>(prop, cls);}
+  {return this->template change<contract::ADD_OBJECTPROP_RANGE>(prop, cls);}
   // Remove that range (REMOVE OBJECTPROP RANGE).
   decltype(auto) remove_object_range(const std::string & prop, const std::string & cls)
-  {return change<contract::REMOVE_OBJECTPROP_RANGE>(prop, cls);}
+  {return this->template change<contract::REMOVE_OBJECTPROP_RANGE>(prop, cls);}
   // Data property domain (ADD DATAPROP DOMAIN).
   decltype(auto) add_data_domain(const std::string & prop, const std::string & cls)
-  {return change<contract::ADD_DATAPROP_DOMAIN>(prop, cls);}
+  {return this->template change<contract::ADD_DATAPROP_DOMAIN>(prop, cls);}
   // Remove that domain (REMOVE DATAPROP DOMAIN).
   decltype(auto) remove_data_domain(const std::string & prop, const std::string & cls)
-  {return change<contract::REMOVE_DATAPROP_DOMAIN>(prop, cls);}
+  {return this->template change<contract::REMOVE_DATAPROP_DOMAIN>(prop, cls);}
   // Data property range (ADD DATAPROP RANGE).
   decltype(auto) add_data_range(const std::string & prop, const std::string & datatype)
-  {return change<contract::ADD_DATAPROP_RANGE>(prop, datatype);}
+  {return this->template change<contract::ADD_DATAPROP_RANGE>(prop, datatype);}
   // Remove that range (REMOVE DATAPROP RANGE).
   decltype(auto) remove_data_range(const std::string & prop, const std::string & datatype)
-  {return change<contract::REMOVE_DATAPROP_RANGE>(prop, datatype);}
+  {return this->template change<contract::REMOVE_DATAPROP_RANGE>(prop, datatype);}
   // Assert that the individuals are the same (ADD IND SAME).
   decltype(auto) add_same_individuals(const std::vector<std::string> & individuals)
-  {return change_all<contract::ADD_IND_SAME>(individuals);}
+  {return this->template change_all<contract::ADD_IND_SAME>(individuals);}
   // Remove that SameIndividual axiom (REMOVE IND SAME).
   decltype(auto) remove_same_individuals(const std::vector<std::string> & individuals)
-  {return change_all<contract::REMOVE_IND_SAME>(individuals);}
+  {return this->template change_all<contract::REMOVE_IND_SAME>(individuals);}
   // Define the class by a Manchester class expression (ADD CLASS EQUIVALENT).
   decltype(auto) add_equivalent_class(const std::string & cls, const std::string & expression)
-  {return change<contract::ADD_CLASS_EQUIVALENT>(cls, expression);}
+  {return this->template change<contract::ADD_CLASS_EQUIVALENT>(cls, expression);}
   // Remove that definition (REMOVE CLASS EQUIVALENT).
   decltype(auto) remove_equivalent_class(const std::string & cls, const std::string & expression)
-  {return change<contract::REMOVE_CLASS_EQUIVALENT>(cls, expression);}
+  {return this->template change<contract::REMOVE_CLASS_EQUIVALENT>(cls, expression);}
   // One axiom in Manchester or functional syntax (ADD AXIOM).
   decltype(auto) add_axiom(const std::string & axiom)
-  {return change<contract::ADD_AXIOM>(axiom);}
+  {return this->template change<contract::ADD_AXIOM>(axiom);}
   // Remove that axiom (REMOVE AXIOM).
   decltype(auto) remove_axiom(const std::string & axiom)
-  {return change<contract::REMOVE_AXIOM>(axiom);}
+  {return this->template change<contract::REMOVE_AXIOM>(axiom);}
   // Add a SWRL rule (ADD SWRL).
   decltype(auto) add_rule(const std::string & name, const std::string & rule)
-  {return change<contract::ADD_SWRL>(name, rule);}
+  {return this->template change<contract::ADD_SWRL>(name, rule);}
   // Remove a SWRL rule (REMOVE SWRL).
   decltype(auto) remove_rule(const std::string & name, const std::string & rule)
-  {return change<contract::REMOVE_SWRL>(name, rule);}
+  {return this->template change<contract::REMOVE_SWRL>(name, rule);}
   // Rename an individual everywhere (RENAME IND).
   decltype(auto) rename_individual(const std::string & old_name, const std::string & new_name)
-  {return change<contract::RENAME_IND>(old_name, new_name);}
+  {return this->template change<contract::RENAME_IND>(old_name, new_name);}
   // Rename a class everywhere (RENAME CLASS).
   decltype(auto) rename_class(const std::string & old_name, const std::string & new_name)
-  {return change<contract::RENAME_CLASS>(old_name, new_name);}
+  {return this->template change<contract::RENAME_CLASS>(old_name, new_name);}
   // Rename a data property everywhere (RENAME DATAPROP).
   decltype(auto) rename_data_property(const std::string & old_name, const std::string & new_name)
-  {return change<contract::RENAME_DATAPROP>(old_name, new_name);}
+  {return this->template change<contract::RENAME_DATAPROP>(old_name, new_name);}
   // Rename an object property everywhere (RENAME OBJECTPROP).
   decltype(auto) rename_object_property(const std::string & old_name, const std::string & new_name)
-  {return change<contract::RENAME_OBJECTPROP>(old_name, new_name);}
+  {return this->template change<contract::RENAME_OBJECTPROP>(old_name, new_name);}
 
 protected:
   ~ManipulationFaces() = default;
-
-  // For Manipulations' hand-written changes too (this->template change<...>).
-  template<const contract::Command & C, typename ... Args>
-  decltype(auto) change(const Args & ... args)
-  {
-    static_assert(C.kind == contract::Kind::Manipulation, "not a manipulation in the catalogue");
-    static_assert(C.accepts(static_cast<int>(sizeof...(Args))),
-      "the core's catalogue gives this command another number of arguments");
-    return static_cast<Derived &>(*this).send_change(C, std::vector<std::string>{args ...});
-  }
-
-  template<const contract::Command & C>
-  decltype(auto) change_all(const std::vector<std::string> & args)
-  {
-    static_assert(C.kind == contract::Kind::Manipulation && C.variadic,
-      "not a variadic manipulation in the catalogue");
-    return static_cast<Derived &>(*this).send_change(C, args);
-  }
 };
 
 template<typename Derived>

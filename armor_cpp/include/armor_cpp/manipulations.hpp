@@ -8,7 +8,8 @@
 // A method names its command by the constant of contract.hpp, generated from the core's
 // catalogue; a command that leaves the catalogue, or whose number of arguments changes there,
 // stops this file compiling. The class that mixes it in decides what "send" means through
-// `send_change(command, args)` and what a method returns (Reference: void, Batch: Batch &).
+// `send_change(command, args)` (changes.hpp) and what a method returns (Reference: void,
+// Batch: Batch &).
 //
 // Arguments naming entities take a plain name (`Robot`), a full IRI
 // (`http://example.org/onto#Robot` or `<...>`) or a prefixed name (`dev:Charger`). Naming an

@@ -9,13 +9,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Response;
 import io.github.armor.core.answers.Syntax;
+import io.github.armor.core.bench.JustificationCheck;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashMap;
-import java.util.HashSet;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Random;
 import java.util.Set;
 import java.util.stream.Collectors;
@@ -33,7 +30,6 @@ import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLObjectProperty;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
-import org.semanticweb.owlapi.model.parameters.Imports;
 import org.semanticweb.owlapi.reasoner.OWLReasoner;
 
 /**
@@ -141,6 +137,58 @@ class ExplanationsTest {
     }
 
     @Test
+    void aSubsumptionThroughToldLinksIsSearchedOnThoseLinksFirst() throws Exception {
+        String ns = "http://www.example.org/kitchen#";
+        // Cup -> Crockery -> Tableware = Dishware -> PhysicalObject, among axioms a STAR module keeps.
+        Path file = dir.resolve("kitchen.ofn");
+        java.nio.file.Files.writeString(file, "Prefix(:=<" + ns + ">) Ontology(<" + ns + "o>\n"
+                + "SubClassOf(:Cup :Crockery) SubClassOf(:Crockery :Tableware)\n"
+                + "EquivalentClasses(:Tableware :Dishware) SubClassOf(:Dishware :PhysicalObject)\n"
+                + "SubClassOf(:Cup ObjectSomeValuesFrom(:hasPart :Handle)) SubClassOf(:Handle :PhysicalObject)\n"
+                + "SubClassOf(:Crockery ObjectAllValuesFrom(:madeOf :Ceramic)) SubClassOf(:Glass :Tableware)\n"
+                + "SubClassOf(ObjectSomeValuesFrom(:hasPart :PhysicalObject) :PhysicalObject)\n"
+                + "DisjointClasses(:Ceramic :Handle))\n");
+        // The four told links are searched, not the module that also holds the hasPart path.
+        assertExplainedBy(file, ns, "searched 4 of 10 axioms", List.of("1 axiom Crockery SubClassOf Tableware",
+                "1 axiom Cup SubClassOf Crockery", "1 axiom Dishware EquivalentTo Tableware",
+                "1 axiom Dishware SubClassOf PhysicalObject"), "EXPLAIN CLASS CLASS", "Cup", "PhysicalObject", "1");
+    }
+
+    /** The directive's justification, each line without the namespace, sorted; what its description says it searched. */
+    private void assertExplainedBy(Path file, String ns, String searched, List<String> lines, String words,
+                                   String... args) {
+        CoreFixture fixture = new CoreFixture(dir);
+        fixture.ok("r", "LOAD FILE", file.toString(), ns + "o", "false", "HERMIT", "false");
+        Response answer = fixture.ok("r", words, args);
+        assertEquals(lines, answer.queriedObjects().stream().map(line -> line.replace("<" + ns, "")
+                .replace(">", "")).sorted().toList());
+        assertTrue(answer.errorDescription().contains(searched), answer.errorDescription());
+    }
+
+    @Test
+    void aLinkOfATransitivePropertyIsSearchedOnItsChainFirst() throws Exception {
+        String ns = "http://www.example.org/depot#";
+        StringBuilder map = new StringBuilder("Prefix(:=<" + ns + ">) Ontology(<" + ns + "o>\n"
+                + "TransitiveObjectProperty(:partOf) ObjectPropertyDomain(:partOf :Place)\n"
+                + "ObjectPropertyAssertion(:partOf :floor0 :building) ObjectPropertyAssertion(:partOf :floor1 :building)\n");
+        for (int zone = 0; zone < 6; zone++) {
+            map.append("ObjectPropertyAssertion(:partOf :zone").append(zone).append(" :floor").append(zone % 2)
+                    .append(")\n");
+            for (int room = 0; room < 5; room++) {
+                map.append("ObjectPropertyAssertion(:partOf :room").append(zone).append('_').append(room)
+                        .append(" :zone").append(zone).append(") ClassAssertion(:Room :room").append(zone)
+                        .append('_').append(room).append(")\n");
+            }
+        }
+        Path file = dir.resolve("depot.ofn");
+        java.nio.file.Files.writeString(file, map.append(")\n").toString());
+        // The chain and the property's transitivity are searched, not the tree around the two.
+        assertExplainedBy(file, ns, "searched 4 of ", List.of("1 asserted floor1 partOf building",
+                "1 asserted room3_2 partOf zone3", "1 asserted zone3 partOf floor1", "1 axiom Transitive: partOf"),
+                "EXPLAIN OBJECTPROP IND", "partOf", "room3_2", "building", "1");
+    }
+
+    @Test
     void anAssertedFactAnswersItselfAndAFactThatDoesNotHoldSaysSo() {
         CoreFixture fixture = new CoreFixture(dir);
         fixture.loadRobotics("map", "HERMIT", false);
@@ -214,6 +262,28 @@ class ExplanationsTest {
     }
 
     @Test
+    void theCheckOfAnswersCatchesAWrongJustification() {
+        CoreFixture fixture = new CoreFixture(dir);
+        fixture.loadRobotics("map", "HERMIT", false);
+        List<String> lines = fixture.ok("map", "EXPLAIN IND CLASS", "robot1", "Agent", "1").queriedObjects();
+        OWLOntology ontology = robotics();
+        OWLDataFactory f = ontology.getOWLOntologyManager().getOWLDataFactory();
+        OWLAxiom fact = f.getOWLClassAssertionAxiom(cls(f, "Agent"), ind(f, "robot1"));
+        JustificationCheck check = new JustificationCheck(ontology, true);
+        assertEquals(new JustificationCheck.Verdict(1, List.of()), check.check(fact, lines));
+
+        String unrelated = ontology.logicalAxioms().map(a -> "1 axiom " + Syntax.render(null, true, a))
+                .filter(line -> !lines.contains(line)).findFirst().orElseThrow();
+        List<String> withOneMore = new ArrayList<>(lines);
+        withOneMore.add(unrelated);
+        assertTrue(check.check(fact, withOneMore).problems().get(0).contains("is not minimal"));
+        assertTrue(check.check(fact, lines.subList(0, lines.size() - 1)).problems().get(0)
+                .contains("does not entail the fact"));
+        assertTrue(check.check(fact, List.of("1 axiom Robot SubClassOf Nothing")).problems().get(0)
+                .startsWith("not an axiom of the ontology"));
+    }
+
+    @Test
     void pastTheTimeLimitWhatWasFoundIsAnsweredMarkedPartial() {
         long limitMs = 4_000;
         CoreFixture fixture = new CoreFixture(new CoreConfig(true, "HERMIT", List.of(CoreFixture.ONTOLOGIES, dir),
@@ -257,39 +327,9 @@ class ExplanationsTest {
 
     /** Each justification of the answer: its lines are axioms of the ontology, it entails the fact, it is minimal. */
     private static void checkJustifications(OWLOntology ontology, OWLAxiom fact, List<String> lines) {
-        Map<String, OWLAxiom> byText = new HashMap<>();
-        ontology.logicalAxioms(Imports.INCLUDED).forEach(a -> byText.put(Syntax.render(null, true, a), a));
-        Map<String, Set<OWLAxiom>> justifications = new LinkedHashMap<>();
-        for (String line : lines) {
-            String[] parts = line.split(" ", 3);
-            OWLAxiom axiom = byText.get(parts[2]);
-            assertNotNull(axiom, () -> "not an axiom of the ontology: '" + line + "' (explaining " + fact + ")");
-            justifications.computeIfAbsent(parts[0], n -> new HashSet<>()).add(axiom);
-        }
-        assertFalse(justifications.isEmpty(), () -> "no justification of " + fact);
-        for (Set<OWLAxiom> justification : justifications.values()) {
-            assertTrue(entails(justification, fact), () -> justification + " does not entail " + fact);
-            for (OWLAxiom axiom : justification) {
-                Set<OWLAxiom> smaller = new HashSet<>(justification);
-                smaller.remove(axiom);
-                assertFalse(entails(smaller, fact), () -> justification + " is not minimal for " + fact
-                        + ": it entails it without " + axiom);
-            }
-        }
-    }
-
-    private static boolean entails(Set<OWLAxiom> axioms, OWLAxiom fact) {
-        try {
-            OWLOntology ontology = OWLManager.createOWLOntologyManager().createOntology(axioms);
-            OWLReasoner reasoner = new ReasonerFactory().createReasoner(ontology);
-            try {
-                return reasoner.isEntailed(fact);
-            } finally {
-                reasoner.dispose();
-            }
-        } catch (Exception e) {
-            throw new AssertionError(e);
-        }
+        JustificationCheck.Verdict verdict = new JustificationCheck(ontology, true).check(fact, lines);
+        assertTrue(verdict.problems().isEmpty(), () -> "explaining " + fact + ": " + verdict.problems());
+        assertTrue(verdict.right() > 0, () -> "no justification of " + fact);
     }
 
     private static String words(OWLAxiom fact) {

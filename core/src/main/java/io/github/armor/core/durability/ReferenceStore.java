@@ -641,6 +641,11 @@ final class ReferenceStore {
                 storage.deleteIfExists(file);
             }
         } catch (IOException | RuntimeException e) {
+            if (!Files.isDirectory(dir)) {
+                // A DROP moved the reference's folder away while this ran: nothing is left to keep.
+                LOG.info("checkpoint {} of '{}' abandoned: the reference was dropped", seq, name);
+                return;
+            }
             LOG.error("writing checkpoint {} of '{}' failed; the previous one and every journal since stay in use:"
                     + " {}", seq, name, e.toString());
             if (written != null) {

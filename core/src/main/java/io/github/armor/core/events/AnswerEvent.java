@@ -43,20 +43,19 @@ public record AnswerEvent(String subscription, String reference, long revision, 
 
     @Override
     public JsonObject toJson() {
-        JsonObject json = new JsonObject();
-        json.addProperty("event", "answer");
+        JsonObject json = CoreEvent.frame("answer", reference, revision);
         json.addProperty("subscription", subscription);
-        json.addProperty("reference", reference);
-        json.addProperty("revision", revision);
-        JsonArray addedJson = new JsonArray();
-        added.forEach(addedJson::add);
-        json.add("added", addedJson);
-        JsonArray removedJson = new JsonArray();
-        removed.forEach(removedJson::add);
-        json.add("removed", removedJson);
+        json.add("added", strings(added));
+        json.add("removed", strings(removed));
         json.addProperty("exit_code", exitCode);
         json.addProperty("error_description", errorDescription);
         json.addProperty("stamp_ns", stampNs);
         return json;
+    }
+
+    private static JsonArray strings(List<String> values) {
+        JsonArray array = new JsonArray();
+        values.forEach(array::add);
+        return array;
     }
 }

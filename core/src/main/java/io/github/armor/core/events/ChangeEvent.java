@@ -40,10 +40,7 @@ public record ChangeEvent(String reference, long revision, String clientName, Li
 
     @Override
     public JsonObject toJson() {
-        JsonObject json = new JsonObject();
-        json.addProperty("event", "change");
-        json.addProperty("reference", reference);
-        json.addProperty("revision", revision);
+        JsonObject json = CoreEvent.frame("change", reference, revision);
         json.addProperty("client_name", clientName);
         JsonArray array = new JsonArray();
         directives.forEach(d -> array.add(DirectiveJson.toJson(d)));

@@ -16,6 +16,15 @@ public interface CoreEvent {
     /** The frame sent to clients. */
     JsonObject toJson();
 
+    /** The start of every event's frame: its kind, the reference and the revision it is about. */
+    static JsonObject frame(String event, String reference, long revision) {
+        JsonObject json = new JsonObject();
+        json.addProperty("event", event);
+        json.addProperty("reference", reference);
+        json.addProperty("revision", revision);
+        return json;
+    }
+
     /** The wall-clock time now, in nanoseconds since the epoch: when an event happened. */
     static long nowNanos() {
         Instant now = Instant.now();

@@ -82,6 +82,11 @@ public final class ExplanationCommands implements CommandGroup {
         if (reference.ontology().containsAxiom(fact, Imports.INCLUDED, AxiomAnnotations.IGNORE_AXIOM_ANNOTATIONS)) {
             return c.ok(lines.asserted()).withDescription("asserted: the fact is in the ontology itself");
         }
+        Justifications.Found told = Justifications.ofToldPath(reference.ontology(), fact, limit,
+                reference.reasonerName(), ReasonerCalls.deadline(c.config().reasonerTimeoutMs()));
+        if (told != null) {
+            return answer(c, lines, told, "the fact");
+        }
         OWLReasoner reasoner = reference.reasonerForQuery();
         // The reasoner's own answer first (what QUERY answers); entailment checking covers what
         // a reasoner infers but does not list (HermiT's data values of a class's hasValue).

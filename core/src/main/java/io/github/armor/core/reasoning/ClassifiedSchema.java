@@ -100,9 +100,9 @@ public final class ClassifiedSchema {
                         Set<OWLNamedIndividual> schemaIndividuals) {}
 
     /**
-     * The schema of an ontology: its logical axioms that are not assertions, a declaration of every
-     * class, property and datatype, and the assertions about individuals the schema names; with
-     * the reasoner's name, they make the digest.
+     * The schema of an ontology: its logical axioms that are not assertions (SWRL rules only when
+     * the schema names individuals), a declaration of every class, property and datatype, and the
+     * assertions about individuals the schema names; with the reasoner's name, they make the digest.
      */
     public static Input inputOf(OWLOntology ontology, String reasonerName) {
         OWLDataFactory data = ontology.getOWLOntologyManager().getOWLDataFactory();
@@ -124,6 +124,10 @@ public final class ClassifiedSchema {
             ontology.axioms(Imports.INCLUDED).filter(axiom -> axiom.isOfType(AxiomType.ABoxAxiomTypes)
                             && axiom.individualsInSignature().anyMatch(named::contains))
                     .forEach(schema::add);
+        } else {
+            // A DL-safe rule binds named individuals only, and a schema naming none has none to
+            // bind: rules change nothing there, and HermiT refuses those with built-ins outright.
+            schema.removeIf(axiom -> axiom.isOfType(AxiomType.SWRL_RULE));
         }
         ontology.signature(Imports.INCLUDED).filter(entity -> !entity.isOWLNamedIndividual() && !entity.isBuiltIn())
                 .map(data::getOWLDeclarationAxiom).forEach(schema::add);

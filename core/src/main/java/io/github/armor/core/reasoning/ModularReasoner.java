@@ -95,6 +95,8 @@ public final class ModularReasoner implements OWLReasoner {
     private volatile ReasoningPlan plan = ReasoningPlan.NOT_YET;
     private LastUpdate lastUpdate;
     private AboxModules modules;
+    /** Set by dispose: a call abandoned at a time limit that finishes later must not build a reasoner again. */
+    private volatile boolean disposed;
     private ModuleRealiser realiser;
     private boolean schemaConsistent;
     // With SWRL rules: the engine, the types without its conclusions (what rules read), and the
@@ -114,6 +116,8 @@ public final class ModularReasoner implements OWLReasoner {
     private volatile Classifications.Job classification;
     private volatile boolean hierarchyCovers;
     private volatile boolean classifiedHere;
+    // The classification the log has told about: once, not at every question that waits for it.
+    private Classifications.Job announced;
     private volatile boolean stopWaiting;
     // The classes realised with every change, and those clients asked about (RealisationScope).
     private RealisationScope scope;
@@ -527,11 +531,17 @@ public final class ModularReasoner implements OWLReasoner {
             mode = Mode.NOT_REASONED;
             throw e;
         } catch (RuntimeException e) {
+            if (disposed) {
+                throw e;
+            }
             reasonOnWhole("a module failed: " + e);
         }
     }
 
     private void reasonOnWhole(String because) {
+        if (disposed) {
+            throw new ReasonerInterruptedException("the reasoner was disposed while this call ran");
+        }
         LOG.info("{}: reasoning on the whole ontology with {}: {}", ontology.getOntologyID().getOntologyIRI()
                 .map(Object::toString).orElse("(anonymous ontology)"), underlyingName, because);
         mode = Mode.WHOLE;
@@ -578,7 +588,8 @@ public final class ModularReasoner implements OWLReasoner {
     private ClassifiedSchema awaitClassification() {
         stopWaiting = false;
         ClassifiedSchema done = classification.await(() -> stopWaiting);
-        if (done != null && classifiedHere) {
+        if (done != null && classifiedHere && announced != classification) {
+            announced = classification;
             LOG.info("{}: {} classes classified with {} in {} ms", ontology.getOntologyID().getOntologyIRI()
                     .map(Object::toString).orElse("(anonymous ontology)"), done.classCount(), underlyingName,
                     done.classificationNanos() / 1_000_000);
@@ -836,6 +847,7 @@ public final class ModularReasoner implements OWLReasoner {
 
     @Override
     public void dispose() {
+        disposed = true;
         ontology.getOWLOntologyManager().removeOntologyChangeListener(listener);
         Classifications.release(classification);
         if (whole != null) {

@@ -18,13 +18,13 @@ import java.util.TreeMap;
 import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.stream.Collectors;
+import java.util.stream.Stream;
 import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLClassExpression;
-import org.semanticweb.owlapi.model.OWLDataProperty;
+import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLLiteral;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
-import org.semanticweb.owlapi.model.OWLObjectProperty;
 import org.semanticweb.owlapi.model.parameters.Imports;
 import org.semanticweb.owlapi.search.EntitySearcher;
 
@@ -63,7 +63,7 @@ final class IndividualsView {
             Set<OWLClass> types = new LinkedHashSet<>(asserted);
             types.addAll(published.map(state -> ViewReads.directTypes(state.state(), individual))
                     .orElseGet(() -> ViewReads.directTypes(reference, individual)));
-            item.add("types", typesJson(types, asserted));
+            item.add("types", withAsserted(types, asserted));
             items.add(item);
         };
         if (published.isPresent()) {
@@ -94,7 +94,7 @@ final class IndividualsView {
             Set<OWLClass> types = new LinkedHashSet<>(asserted);
             types.addAll(ViewReads.inferred(r, reasoner -> reasoner.getTypes(individual, false).entities()
                     .filter(c -> !c.isOWLThing()).toList()).orElse(List.of()));
-            view.add("types", typesJson(types, asserted));
+            view.add("types", withAsserted(types, asserted));
             view.add("object_values", objectValues(r, individual));
             view.add("data_values", dataValues(r, individual));
             Set<OWLNamedIndividual> same = ViewReads.inferred(r, reasoner -> reasoner.getSameIndividuals(individual)
@@ -111,54 +111,35 @@ final class IndividualsView {
                 .collect(Collectors.toCollection(LinkedHashSet::new));
     }
 
-    private static JsonArray typesJson(Set<OWLClass> types, Set<OWLClass> asserted) {
+    /** The entities by name, each {iri, name, asserted}: types of an individual, values of a property. */
+    private static JsonArray withAsserted(Set<? extends OWLEntity> entities, Set<? extends OWLEntity> asserted) {
         JsonArray array = new JsonArray();
-        types.stream().sorted(ViewJson.BY_NAME).forEach(t -> array.add(ViewJson.entity(t, asserted.contains(t))));
+        entities.stream().sorted(ViewJson.BY_NAME).forEach(e -> array.add(ViewJson.entity(e, asserted.contains(e))));
         return array;
     }
 
     /** {"property": {...}, "values": [{iri, name, asserted}]} for each object property with values. */
     private static JsonArray objectValues(Reference reference, OWLNamedIndividual individual) {
-        JsonArray properties = new JsonArray();
-        List<OWLObjectProperty> all = reference.ontology().objectPropertiesInSignature(Imports.INCLUDED)
-                .filter(p -> !p.isBuiltIn()).sorted(ViewJson.BY_NAME).toList();
-        for (OWLObjectProperty property : all) {
+        return perProperty(reference.ontology().objectPropertiesInSignature(Imports.INCLUDED), property -> {
             Set<OWLNamedIndividual> asserted = EntitySearcher.getObjectPropertyValues(individual, property,
                     reference.ontology().importsClosure()).filter(i -> i.isNamed())
                     .map(i -> i.asOWLNamedIndividual()).collect(Collectors.toSet());
             Set<OWLNamedIndividual> values = new LinkedHashSet<>(asserted);
             values.addAll(ViewReads.inferred(reference, reasoner -> reasoner.getObjectPropertyValues(individual,
                     property).entities().toList()).orElse(List.of()));
-            if (values.isEmpty()) {
-                continue;
-            }
-            JsonObject entry = new JsonObject();
-            entry.add("property", ViewJson.entity(property));
-            JsonArray shown = new JsonArray();
-            values.stream().sorted(ViewJson.BY_NAME).forEach(v -> shown.add(ViewJson.entity(v, asserted.contains(v))));
-            entry.add("values", shown);
-            properties.add(entry);
-        }
-        return properties;
+            return withAsserted(values, asserted);
+        });
     }
 
     /** {"property": {...}, "values": [{"value": "\"80\"^^xsd:integer", "asserted"}]} per data property with values. */
     private static JsonArray dataValues(Reference reference, OWLNamedIndividual individual) {
-        JsonArray properties = new JsonArray();
-        List<OWLDataProperty> all = reference.ontology().dataPropertiesInSignature(Imports.INCLUDED)
-                .filter(p -> !p.isBuiltIn()).sorted(ViewJson.BY_NAME).toList();
-        for (OWLDataProperty property : all) {
+        return perProperty(reference.ontology().dataPropertiesInSignature(Imports.INCLUDED), property -> {
             Set<OWLLiteral> asserted = EntitySearcher.getDataPropertyValues(individual, property,
                     reference.ontology().importsClosure()).collect(Collectors.toSet());
             TreeMap<String, Boolean> values = new TreeMap<>();
             asserted.forEach(l -> values.put(Rendering.literal(l), true));
             ViewReads.inferred(reference, reasoner -> new ArrayList<>(reasoner.getDataPropertyValues(individual,
                     property))).orElse(new ArrayList<>()).forEach(l -> values.putIfAbsent(Rendering.literal(l), false));
-            if (values.isEmpty()) {
-                continue;
-            }
-            JsonObject entry = new JsonObject();
-            entry.add("property", ViewJson.entity(property));
             JsonArray shown = new JsonArray();
             values.forEach((value, isAsserted) -> {
                 JsonObject item = new JsonObject();
@@ -166,9 +147,22 @@ final class IndividualsView {
                 item.addProperty("asserted", isAsserted);
                 shown.add(item);
             });
-            entry.add("values", shown);
-            properties.add(entry);
-        }
-        return properties;
+            return shown;
+        });
+    }
+
+    /** {"property": {...}, "values": [...]} for each property (not built in, by name) whose values are not empty. */
+    private static <P extends OWLEntity> JsonArray perProperty(Stream<P> properties, Function<P, JsonArray> values) {
+        JsonArray entries = new JsonArray();
+        properties.filter(p -> !p.isBuiltIn()).sorted(ViewJson.BY_NAME).forEach(property -> {
+            JsonArray shown = values.apply(property);
+            if (!shown.isEmpty()) {
+                JsonObject entry = new JsonObject();
+                entry.add("property", ViewJson.entity(property));
+                entry.add("values", shown);
+                entries.add(entry);
+            }
+        });
+        return entries;
     }
 }

@@ -3,20 +3,18 @@ package io.github.armor.core.bench;
 
 import com.google.gson.Gson;
 import io.github.armor.core.ArmorCore;
-import io.github.armor.core.answers.Syntax;
 import io.github.armor.core.api.CoreConfig;
 import io.github.armor.core.api.Directive;
 import io.github.armor.core.api.Response;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.HashMap;
-import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
-import org.semanticweb.HermiT.ReasonerFactory;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.model.EntityType;
 import org.semanticweb.owlapi.model.IRI;
@@ -26,8 +24,8 @@ import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.parameters.Imports;
-import org.semanticweb.owlapi.reasoner.OWLReasoner;
 import org.semanticweb.owlapi.util.AutoIRIMapper;
+import org.semanticweb.owlapi.util.SimpleIRIMapper;
 
 /**
  * Time to the first justification (EXPLAIN ... 1), in this JVM with no service around it, on a
@@ -98,17 +96,26 @@ public final class ExplanationBench {
 
     /** The ontology as the OWL API reads it, and HermiT on each justification alone. */
     private static final class Checker {
+        private static final Pattern CATALOG_ENTRY = Pattern.compile("<uri\\b[^>]*\\bname=\"([^\"]+)\"[^>]*\\buri=\"([^\"]+)\"");
         private final OWLOntology ontology;
         private final OWLDataFactory factory;
-        private final Map<String, OWLAxiom> byText = new HashMap<>();
+        private final JustificationCheck justifications;
 
         Checker(Path file, boolean fullIri) throws Exception {
             OWLOntologyManager manager = OWLManager.createOWLOntologyManager();
             manager.getIRIMappers().add(new AutoIRIMapper(file.getParent().toFile(), false));
+            // Protégé's catalog beside the file, as the core reads it (SOMA's imports name no file otherwise).
+            Path catalog = file.resolveSibling("catalog-v001.xml");
+            if (Files.isRegularFile(catalog)) {
+                Matcher entry = CATALOG_ENTRY.matcher(Files.readString(catalog));
+                while (entry.find()) {
+                    manager.getIRIMappers().add(new SimpleIRIMapper(IRI.create(entry.group(1)),
+                            IRI.create(file.resolveSibling(entry.group(2)).toUri())));
+                }
+            }
             ontology = manager.loadOntologyFromOntologyDocument(file.toFile());
             factory = manager.getOWLDataFactory();
-            ontology.logicalAxioms(Imports.INCLUDED).forEach(a -> byText.put(Syntax.render(null, fullIri, a),
-                    a.getAxiomWithoutAnnotations()));
+            justifications = new JustificationCheck(ontology, fullIri);
         }
 
         /** How many justifications of the answers are right; what is wrong with the others goes to {@code wrong}. */
@@ -116,35 +123,10 @@ public final class ExplanationBench {
             int right = 0;
             for (Map.Entry<Integer, List<String>> answer : answers.entrySet()) {
                 String[] question = questions.get(answer.getKey());
-                OWLAxiom fact = fact(String.join(" ", words), question);
-                Map<String, Set<OWLAxiom>> justifications = new LinkedHashMap<>();
-                for (String line : answer.getValue()) {
-                    String[] parts = line.split(" ", 3);
-                    OWLAxiom axiom = byText.get(parts[2]);
-                    if (axiom == null) {
-                        wrong.add(String.join(",", question) + ": not an axiom of the ontology: " + line);
-                    } else {
-                        justifications.computeIfAbsent(parts[0], n -> new HashSet<>()).add(axiom);
-                    }
-                }
-                if (justifications.isEmpty()) {
-                    wrong.add(String.join(",", question) + ": no justification");
-                }
-                for (Set<OWLAxiom> justification : justifications.values()) {
-                    String problem = !entails(justification, fact) ? "does not entail the fact" : null;
-                    for (OWLAxiom axiom : justification) {
-                        Set<OWLAxiom> smaller = new HashSet<>(justification);
-                        smaller.remove(axiom);
-                        if (problem == null && entails(smaller, fact)) {
-                            problem = "not minimal: entails the fact without " + axiom;
-                        }
-                    }
-                    if (problem == null) {
-                        right++;
-                    } else {
-                        wrong.add(String.join(",", question) + ": " + justification + " " + problem);
-                    }
-                }
+                JustificationCheck.Verdict verdict = justifications.check(fact(String.join(" ", words), question),
+                        answer.getValue());
+                right += verdict.right();
+                verdict.problems().forEach(problem -> wrong.add(String.join(",", question) + ": " + problem));
             }
             return right;
         }
@@ -170,20 +152,6 @@ public final class ExplanationBench {
             return ontology.signature(Imports.INCLUDED).filter(e -> e.isType(type))
                     .filter(e -> e.getIRI().toString().endsWith("#" + name)).map(e -> factory.getOWLEntity(type,
                             e.getIRI())).findFirst().orElseThrow(() -> new IllegalArgumentException(name));
-        }
-
-        private static boolean entails(Set<OWLAxiom> axioms, OWLAxiom fact) {
-            try {
-                OWLOntology alone = OWLManager.createOWLOntologyManager().createOntology(axioms);
-                OWLReasoner reasoner = new ReasonerFactory().createReasoner(alone);
-                try {
-                    return reasoner.isEntailed(fact);
-                } finally {
-                    reasoner.dispose();
-                }
-            } catch (Exception e) {
-                throw new IllegalStateException(e);
-            }
         }
     }
 }

@@ -6,6 +6,7 @@ import io.github.armor.core.api.ExitCode;
 import io.github.armor.core.spi.CommandGroup;
 import io.github.armor.core.spi.CommandTable;
 import io.github.armor.core.spi.Context;
+import io.github.armor.core.spi.FaceAnswer;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -25,6 +26,7 @@ public final class PddlCommands implements CommandGroup {
     public void register(CommandTable table) {
         table.command("QUERY PDDL PROBLEM").args("mapping path or text")
                 .summary("a PDDL problem from the reference's asserted and inferred knowledge (docs/pddl.md)")
+                .face("pddl_problem", FaceAnswer.EXPRESSIONS, "mapping")
                 .query(c -> c.ok(List.of(problem(c).text())));
         table.command("SAVE PDDL PROBLEM").args("mapping path or text", "path")
                 .summary("write that PDDL problem to a file inside write_dirs")

@@ -7,6 +7,7 @@ import io.github.armor.core.api.Response;
 import io.github.armor.core.spi.CommandGroup;
 import io.github.armor.core.spi.CommandTable;
 import io.github.armor.core.spi.Context;
+import io.github.armor.core.spi.FaceAnswer;
 import io.github.armor.core.spi.Knowledge;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
@@ -45,6 +46,7 @@ public final class SitCommands implements CommandGroup {
         table.command("QUERY SIT SCENES")
                 .summary("the learned scene classes: definition in words, cardinality, the scenes each contains"
                         + " (one JSON object each)")
+                .face("scene_classes", FaceAnswer.EXPRESSIONS)
                 .query(c -> c.ok(SceneHierarchy.of(new CoreReference(c)).stream()
                         .map(p -> SceneJson.sceneClass(p.owlClass(), p.definition(), p.parents(), p.equivalents(),
                                 c::render).toString())
@@ -52,6 +54,7 @@ public final class SitCommands implements CommandGroup {
         table.command("QUERY SIT RECENT")
                 .summary("the last scenes of this reference in this session, each recognition explained (one JSON"
                         + " object each, newest first)")
+                .face("recent_scenes", FaceAnswer.EXPRESSIONS)
                 .query(c -> c.ok(recent.of(c.knowledge().identity()).stream().map(Object::toString).toList()));
     }
 

@@ -19,6 +19,7 @@ import io.github.armor.core.reference.WritablePaths;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
+import java.util.function.BiFunction;
 import java.util.function.Function;
 
 /** Contract 5.1: creating, saving and dropping references, mounting, and the utilities. */
@@ -27,18 +28,10 @@ public final class ReferenceCommands implements CommandGroup {
     public void register(CommandTable table) {
         for (String mode : List.of("-", "MOUNTED")) {
             boolean mount = mode.equals("MOUNTED");
-            table.command("LOAD FILE " + mode)
-                    .args("path", "ontology IRI", "buffered manipulation", "reasoner", "buffered reasoner")
-                    .emptySurplusIgnored()
-                    .summary(mount ? "load a file and mount the caller on it"
-                            : "create the reference from a local ontology file")
-                    .creating(c -> load(c, 0, mount, c.arg(0), files(c)::loadFile));
-            table.command("LOAD WEB " + mode)
-                    .args("URL", "ontology IRI", "buffered manipulation", "reasoner", "buffered reasoner")
-                    .emptySurplusIgnored()
-                    .summary(mount ? "load from a URL and mount the caller on it"
-                            : "create the reference from a URL (web_loading:=true only)")
-                    .creating(c -> load(c, 0, mount, c.arg(0), files(c)::loadWeb));
+            registerLoad(table, "LOAD FILE " + mode, "path", mount, mount ? "load a file and mount the caller on it"
+                    : "create the reference from a local ontology file", OntologyFiles::loadFile);
+            registerLoad(table, "LOAD WEB " + mode, "URL", mount, mount ? "load from a URL and mount the caller on it"
+                    : "create the reference from a URL (web_loading:=true only)", OntologyFiles::loadWeb);
         }
         table.command("CREATE")
                 .args("ontology IRI", "buffered manipulation", "reasoner", "buffered reasoner")
@@ -196,6 +189,15 @@ public final class ReferenceCommands implements CommandGroup {
 
     private static OntologyFiles files(CommandContext c) {
         return new OntologyFiles(c.config());
+    }
+
+    /** LOAD FILE and LOAD WEB, plain or MOUNTED: the same arguments after the source, read by {@code reader}. */
+    private static void registerLoad(CommandTable table, String key, String source, boolean mount, String summary,
+                                     BiFunction<OntologyFiles, String, OntologyFiles.Loaded> reader) {
+        table.command(key).args(source, "ontology IRI", "buffered manipulation", "reasoner", "buffered reasoner")
+                .emptySurplusIgnored()
+                .summary(summary)
+                .creating(c -> load(c, 0, mount, c.arg(0), path -> reader.apply(files(c), path)));
     }
 
     /**
