@@ -63,7 +63,14 @@ first_call() {
   (source install/setup.bash && armor call robotics QUERY IND CLASS -- Room > "$1" 2>&1)
   awk -v a="$started" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.2f", b - a }'
 }
-stop_node() { kill -INT -- "-$node"; wait "$node" || true; node=""; }
+# Ctrl-C as a user would; SIGTERM after 15 s where SIGINT is ignored (a script started in the
+# background by a non-interactive shell inherits SIGINT ignored, and the node keeps it so).
+stop_node() {
+  kill -INT -- "-$node"
+  for _ in $(seq 150); do kill -0 "$node" 2>/dev/null || break; sleep 0.1; done
+  kill -TERM -- "-$node" 2>/dev/null || true
+  wait "$node" || true; node=""
+}
 
 echo "cold_start: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg) at the start"
 run_until_ready "$scratch/cold.log"; cold=$ready_s
