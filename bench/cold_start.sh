@@ -17,7 +17,7 @@ branch="${1:-$(git -C "$repo" rev-parse --abbrev-ref HEAD)}"
 scratch="$(mktemp -d /tmp/armor-cold-XXXXXX)"
 node=""
 cleanup() {
-  if [ -n "$node" ] && kill -0 "$node" 2>/dev/null; then kill -INT -- "-$node"; wait "$node" || true; fi
+  if [ -n "$node" ] && kill -0 "$node" 2>/dev/null; then stop_node; fi
   (cd "$scratch/clone" 2>/dev/null && source install/setup.bash 2>/dev/null \
     && python -c 'from armor_client.cli import call_relay; call_relay.stop()' 2>/dev/null) || true
   rm -rf "$scratch"
