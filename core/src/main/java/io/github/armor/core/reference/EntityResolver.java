@@ -184,29 +184,45 @@ public final class EntityResolver {
         return new StringBuilder(text).reverse().toString();
     }
 
-    /** The edit distance of a and b when it is at most {@code limit}, else some larger number (stops early). */
+    /**
+     * The edit distance of a and b when it is at most {@code limit}, else {@code limit + 1}.
+     * Only the cells within {@code limit} of the diagonal can hold such a distance, so only they
+     * are computed: two names of 100,000 characters cost 100,000 x (2 limit + 1) steps, not
+     * 10^10 (a client's hostile name made a reference's every unknown-name check take minutes).
+     */
     public static int editDistance(String a, String b, int limit) {
-        int[] previous = new int[b.length() + 1];
-        int[] current = new int[b.length() + 1];
-        for (int j = 0; j <= b.length(); j++) {
-            previous[j] = j;
+        int n = a.length();
+        int m = b.length();
+        int over = limit >= Integer.MAX_VALUE - 1 ? Integer.MAX_VALUE - 1 : limit + 1;
+        if (Math.abs(n - m) > limit) {
+            return over;
         }
-        for (int i = 1; i <= a.length(); i++) {
-            current[0] = i;
-            int rowBest = i;
-            for (int j = 1; j <= b.length(); j++) {
-                current[j] = Math.min(previous[j - 1] + (a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1),
-                        Math.min(previous[j], current[j - 1]) + 1);
+        int[] previous = new int[m + 2];
+        int[] current = new int[m + 2];
+        for (int j = 0; j <= m; j++) {
+            previous[j] = Math.min(j, over);
+        }
+        previous[m + 1] = over;
+        for (int i = 1; i <= n; i++) {
+            int from = (int) Math.max(1, (long) i - limit);
+            int to = (int) Math.min(m, (long) i + limit);
+            current[0] = Math.min(i, over);
+            current[from - 1] = from == 1 ? current[0] : over;
+            int rowBest = current[from - 1];
+            for (int j = from; j <= to; j++) {
+                int diagonal = previous[j - 1] + (a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1);
+                current[j] = Math.min(over, Math.min(diagonal, Math.min(previous[j], current[j - 1]) + 1));
                 rowBest = Math.min(rowBest, current[j]);
             }
-            if (rowBest > limit) {
-                return rowBest;  // a row's least value never falls again
+            current[to + 1] = over;
+            if (rowBest >= over) {
+                return over;  // a row's least value never falls again
             }
             int[] swap = previous;
             previous = current;
             current = swap;
         }
-        return previous[b.length()];
+        return previous[m];
     }
 
     private static IRI absoluteIri(String text, String argument) {
