@@ -310,14 +310,16 @@ class Lane:
         self.sent += 1
 
     def _shadow(self, sent) -> None:
-        """Replays on the shadow, in one list, what the target acknowledged."""
+        """Replays on the shadow what the target acknowledged, the way the target got it: a
+        list as a list, a directive alone (a list brings a buffered reasoner's consistency mark
+        up to date, a directive alone does not)."""
         replay = [type(request)(
             client_name=request.client_name, reference_name=self.shadow, command=request.command,
             primary_command_spec=request.primary_command_spec,
             secondary_command_spec=request.secondary_command_spec, args=list(request.args))
             for request in sent if request.reference_name == self.target]
         from armor_contract.exit_codes import ExitCode
-        answer = self.armor.call_list(replay, timeout_s=300)
+        answer = self._replay(replay, as_list=len(sent) > 1)
         if not answer.success and any(r.exit_code == ExitCode.INCONSISTENT
                                       for r in answer.armor_responses):
             # The shadow gets the target's changes only, not the queries and reasoner time
@@ -327,9 +329,17 @@ class Lane:
             # makes the shadow's mark true again; a refusal after it is a disagreement.
             self._ok(self.shadow, 'REASON', '', '')
             self.shadow_reasoned += 1
-            answer = self.armor.call_list(replay, timeout_s=300)
+            answer = self._replay(replay, as_list=len(sent) > 1)
         assert answer.success, (f'a directive that succeeded on target failed on shadow: {replay}: '
                                 f'{[r.error_description for r in answer.armor_responses]}')
+
+    def _replay(self, replay, as_list: bool):
+        """The shadow's answer, as a list's (armor_responses, success)."""
+        if as_list:
+            return self.armor.call_list(replay, timeout_s=300)
+        response = self.armor.call(replay[0], timeout_s=300)
+        return type('Replayed', (), {'armor_responses': [response],
+                                     'success': response.success})
 
     def differences(self) -> set:
         """Axioms in one of target and shadow but not the other (in an earlier epoch, or now)."""
