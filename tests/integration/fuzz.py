@@ -332,8 +332,8 @@ class Lane:
             self._ok(self.shadow, 'REASON', '', '')
             self.shadow_reasoned += 1
             answer = self._replay(replay, as_list=len(sent) > 1)
-            if not answer.success and all(r.exit_code in (ExitCode.INCONSISTENT, ExitCode.ROLLED_BACK)
-                                          for r in answer.armor_responses):
+            refused = (ExitCode.INCONSISTENT, ExitCode.ROLLED_BACK)
+            if not answer.success and all(r.exit_code in refused for r in answer.armor_responses):
                 # The target took it although it is as inconsistent as its shadow says: its
                 # consistency mark was stale (a finding, reported). The shadow cannot follow, so
                 # this client compares what it has and starts afresh.
