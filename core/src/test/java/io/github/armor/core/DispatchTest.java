@@ -271,6 +271,29 @@ class DispatchTest {
         assertEquals(iris("robot1", "robot2"), good.responses().get(1).queriedObjects());
     }
 
+    /**
+     * A REASON inside a list that fails is undone with the list: a buffered reference's
+     * consistency is that of its state after the rollback, not of the list's undone changes (the
+     * fuzz run found a reference that took changes and answered queries while inconsistent).
+     */
+    @Test
+    void aFailingListLeavesNoConsistencyOfItsUndoneChanges() {
+        for (String reasoner : List.of("PELLET", "HERMIT")) {
+            CoreFixture f = fixture();
+            f.loadRobotics("map", reasoner, true);
+            f.ok("map", "ADD IND CLASS", "kitchen", "Corridor");
+            f.ok("map", "REASON");
+            assertFalse(f.ok("map", "QUERY CONSISTENCY").isConsistent(), reasoner);
+            ListResponse list = f.core.executeList(List.of(
+                    Directive.of("c", "map", "REMOVE", "IND", "CLASS", "kitchen", "Corridor"),
+                    Directive.of("c", "map", "REASON", "", ""),
+                    Directive.of("c", "map", "ADD", "DATAPROP", "IND", "batteryLevel", "robot1", "INT", "x")));
+            assertFalse(list.success(), reasoner);
+            assertFalse(f.ok("map", "QUERY CONSISTENCY").isConsistent(), reasoner);
+            assertFails(f.run("map", "QUERY IND CLASS", "Room"), 217);
+        }
+    }
+
     @Test
     void bufferedManipulationWaitsForApply() {
         CoreFixture f = fixture();

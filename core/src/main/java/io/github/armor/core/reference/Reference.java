@@ -387,6 +387,7 @@ public final class Reference {
 
     /** REASON: apply the queue, bring the reasoner up to date, recompute consistency and inferences. */
     public void reason() {
+        noteReasonedInTransaction();
         applyPending();
         timedReasoning(() -> {
             bringReasonerUpToDate();
@@ -479,7 +480,7 @@ public final class Reference {
         } else {
             pending.subList(undo.pendingSizeBefore, pending.size()).clear();
         }
-        if (!bufferedReasoner && !reversed.isEmpty()) {
+        if (!reversed.isEmpty() && (!bufferedReasoner || undo.reasoned)) {
             synchroniseReasoner();
         }
     }
@@ -522,6 +523,7 @@ public final class Reference {
      * a restore this makes even a buffered reasoner see everything that was replayed.
      */
     public void synchroniseReasoner() {
+        noteReasonedInTransaction();
         Runnable work = () -> {
             bringReasonerUpToDate();
             refreshConsistency();
@@ -625,6 +627,12 @@ public final class Reference {
                 + "; nothing it computed is answered; the reference is usable and its reasoner starts afresh", cause);
     }
 
+    private void noteReasonedInTransaction() {
+        if (transaction != null) {
+            transaction.reasoned = true;
+        }
+    }
+
     private void refreshConsistency() {
         try {
             consistent = withinTimeLimit(reasoner()::isConsistent);
@@ -682,6 +690,9 @@ public final class Reference {
         final int pendingSizeBefore;
         List<OWLOntologyChange> pendingBefore;
         final List<OWLOntologyChange> enacted = new ArrayList<>();
+        // The reasoner was brought up to date meanwhile (a REASON in the list): it and the
+        // consistency mark saw changes the rollback undoes.
+        boolean reasoned;
 
         Transaction(int pendingSizeBefore) {
             this.pendingSizeBefore = pendingSizeBefore;
