@@ -183,6 +183,7 @@ class Lane:
         self.shadow_reasoned = 0
         self.stale_consistency = []
         self.differing = set()
+        self.acknowledged = []
         self.failure = None
 
     def load(self, names=None) -> None:
@@ -198,7 +199,11 @@ class Lane:
         Without it the target only grows: after 13,000 directives a client's random axioms made
         every reasoning slower and the run's rate fell from 250 to 179 directives a second."""
         if compare:
-            self.differing |= self.differences()
+            found = self.differences() - self.differing
+            if found:
+                print(f'TARGET AND SHADOW DIFFER ({self.target}, epoch {self.epochs}): {sorted(found)[:6]}; '
+                      f'the last directives the target acknowledged: {self.acknowledged[-8:]}', flush=True)
+            self.differing |= found
         for name in (self.target, self.shadow):
             self._ok(name, 'DROP', '', '')
         self.load((self.target, self.shadow))
@@ -315,6 +320,9 @@ class Lane:
         """Replays on the shadow what the target acknowledged, the way the target got it: a
         list as a list, a directive alone (a list brings a buffered reasoner's consistency mark
         up to date, a directive alone does not)."""
+        self.acknowledged = self.acknowledged[-7:] + [[
+            f'{r.command} {r.primary_command_spec} {r.secondary_command_spec} {[a[:40] for a in r.args][:3]}'
+            for r in sent if r.reference_name == self.target]]
         replay = [type(request)(
             client_name=request.client_name, reference_name=self.shadow, command=request.command,
             primary_command_spec=request.primary_command_spec,

@@ -31,6 +31,7 @@ import org.semanticweb.owlapi.model.OWLObjectProperty;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyCreationException;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
+import org.semanticweb.owlapi.model.OWLRuntimeException;
 import org.semanticweb.owlapi.model.SWRLRule;
 import org.semanticweb.owlapi.model.parameters.Imports;
 import org.semanticweb.owlapi.util.OntologyAxiomPair;
@@ -140,7 +141,7 @@ public final class Syntax {
         ManchesterOWLSyntaxParser parser = OWLManager.createManchesterParser();
         parser.setDefaultOntology(reference.ontology());
         parser.setOWLEntityChecker(new ReferenceEntityChecker(reference, newProperties));
-        parser.setStringToParse("Rule: " + normalised);
+        tokenize(parser, "Rule: " + normalised, text);
         List<OntologyAxiomPair> parsed = parse(text, parser::parseRuleFrame);
         if (parsed.size() != 1 || !(parsed.get(0).getAxiom() instanceof SWRLRule rule)) {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "expected exactly one SWRL rule in '" + abbreviated(text) + "'");
@@ -170,8 +171,19 @@ public final class Syntax {
         ManchesterOWLSyntaxParser parser = OWLManager.createManchesterParser();
         parser.setDefaultOntology(reference.ontology());
         parser.setOWLEntityChecker(new ReferenceEntityChecker(reference, Set.of()));
-        parser.setStringToParse(text);
+        tokenize(parser, text, text);
         return parser;
+    }
+
+    /** The OWL API's tokenizer reads past the end of a text whose last character is an escape. */
+    private static void tokenize(ManchesterOWLSyntaxParser parser, String text, String clientText) {
+        try {
+            parser.setStringToParse(text);
+        } catch (IndexOutOfBoundsException e) {
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + abbreviated(clientText) + "': "
+                    + (clientText.endsWith("\\") ? "it ends in an escape character '\\' with nothing to escape"
+                    : "the text ends inside an escape sequence"), e);
+        }
     }
 
     private static <T> T parse(String text, java.util.function.Supplier<T> parse) {
@@ -179,6 +191,10 @@ public final class Syntax {
             return parse.get();
         } catch (OWLParserException e) {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "cannot parse '" + abbreviated(text) + "': " + shortened(e), e);
+        } catch (OWLRuntimeException e) {
+            // The data factory refuses some parsed axioms outright (DisjointClasses of owl:Thing alone).
+            throw new ArmorException(ExitCode.BAD_SYNTAX, "not an OWL 2 axiom: '" + abbreviated(text) + "': "
+                    + e.getMessage(), e);
         }
     }
 

@@ -9,6 +9,7 @@ import io.github.armor.core.command.CommandGroup;
 import io.github.armor.core.command.CommandTable;
 import io.github.armor.core.reference.ReasonerCalls;
 import io.github.armor.core.reference.Reference;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.function.Predicate;
@@ -47,7 +48,7 @@ public final class ExplanationCommands implements CommandGroup {
                     OWLNamedIndividual subject = c.individual(1);
                     OWLNamedIndividual object = c.individual(2);
                     return explain(c, c.factory().getOWLObjectPropertyAssertionAxiom(c.objectProperty(0), subject,
-                            object), Set.of(subject, object), 3, r -> r.getObjectPropertyValues(subject,
+                            object), new HashSet<>(List.of(subject, object)), 3, r -> r.getObjectPropertyValues(subject,
                             c.objectProperty(0)).containsEntity(object));
                 });
         table.command("EXPLAIN DATAPROP IND").args("prop", "ind", "type", "value").optional("justifications")

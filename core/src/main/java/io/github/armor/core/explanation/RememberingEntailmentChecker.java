@@ -105,7 +105,7 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
             return known;
         }
         reasonerCalls++;
-        boolean entailed = reasoners instanceof ReasonerFactory ? askHermiT(module) : library.isEntailed(module);
+        boolean entailed = reasoners instanceof ReasonerFactory ? askHermiT(module) : libraryEntails(module);
         (entailed ? memory.entailing() : memory.notEntailing()).add(module);
         return entailed;
     }
@@ -165,7 +165,16 @@ final class RememberingEntailmentChecker implements EntailmentChecker<OWLAxiom> 
         } finally {
             manager.removeOntology(ontology);
         }
-        return library.isEntailed(module);
+        return libraryEntails(module);
+    }
+
+    /** An inconsistent set entails every fact; Openllet says so by throwing instead of answering. */
+    private boolean libraryEntails(Set<OWLAxiom> module) {
+        try {
+            return library.isEntailed(module);
+        } catch (InconsistentOntologyException e) {
+            return true;
+        }
     }
 
     /** The negation of an individual's class or object property value, as an assertion; null for other facts. */

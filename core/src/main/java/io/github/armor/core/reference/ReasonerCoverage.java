@@ -246,9 +246,18 @@ public final class ReasonerCoverage implements OWLOntologyChangeListener {
 
     /** Whether a violation is about what a reasoner can use, not about declarations or IRI forms. */
     private static boolean aboutReasoning(OWLProfileViolation violation) {
-        return violation.getAxiom() != null && !(violation instanceof UndeclaredEntityViolation
+        return !(violation instanceof UndeclaredEntityViolation
                 || violation instanceof OntologyIRINotAbsolute || violation instanceof OntologyVersionIRINotAbsolute
-                || violation instanceof UseOfNonAbsoluteIRI);
+                || violation instanceof UseOfNonAbsoluteIRI) && aboutAnAxiom(violation);
+    }
+
+    /** The OWL API's getAxiom throws, rather than answer null, for a violation about the ontology itself. */
+    private static boolean aboutAnAxiom(OWLProfileViolation violation) {
+        try {
+            return violation.getAxiom() != null;
+        } catch (IllegalStateException e) {
+            return false;
+        }
     }
 
     /** Axioms within OWL 2 EL and DL whatever their content, so never checked one by one. */

@@ -20,6 +20,7 @@ import org.semanticweb.owlapi.model.OWLDataFactory;
 import org.semanticweb.owlapi.model.OWLDocumentFormat;
 import org.semanticweb.owlapi.model.OWLInverseObjectPropertiesAxiom;
 import org.semanticweb.owlapi.model.OWLOntology;
+import org.semanticweb.owlapi.model.OWLNaryAxiom;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.RemoveAxiom;
@@ -368,6 +369,13 @@ public final class Reference {
         if (changes.isEmpty()) {
             return;
         }
+        changes.stream().filter(OWLOntologyChange::isAddAxiom).map(OWLOntologyChange::getAxiom)
+                .filter(a -> a instanceof OWLNaryAxiom<?> nary && nary.getOperandsAsList().size() < 2).findFirst()
+                .ifPresent(a -> {
+                    // SameIndividual(:a :a) parses to one operand, which no OWL syntax can write down.
+                    throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "an axiom of this kind needs two different"
+                            + " operands at least: " + a);
+                });
         if (bufferedManipulation) {
             pending.addAll(changes);
             return;

@@ -293,9 +293,15 @@ public final class Manipulations implements CommandGroup {
         return new ArrayList<>(remover.getChanges());
     }
 
+    /** The operands of an n-ary axiom: two different ones at least, which OWL needs to write it down. */
     private static <T> Set<T> all(CommandContext c, java.util.function.BiFunction<CommandContext, Integer, T> entity) {
-        return IntStream.range(0, c.args().size()).mapToObj(i -> entity.apply(c, i))
+        Set<T> operands = IntStream.range(0, c.args().size()).mapToObj(i -> entity.apply(c, i))
                 .collect(Collectors.toCollection(LinkedHashSet::new));
+        if (operands.size() < 2) {
+            throw new ArmorException(ExitCode.WRONG_ARGUMENTS, c.directive().describe()
+                    + " needs two different names at least; it was given " + c.args());
+        }
+        return operands;
     }
 
     static int cardinality(String text) {
