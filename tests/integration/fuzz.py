@@ -284,6 +284,9 @@ class Lane:
                               responses[0].exit_code))
         for response in responses:
             self.codes[response.exit_code] = self.codes.get(response.exit_code, 0) + 1
+            if response.exit_code == 220:
+                print(f'INTERNAL ERROR: {" ".join(words)} {[a[:60] for a in args[:4]]}: '
+                      f'{response.error_description[:300]!r}', flush=True)
             if response.exit_code not in self.fuzzer.defined_codes:
                 self.undefined.append((words, args[:3], response.exit_code))
                 print(f'UNDEFINED EXIT CODE {response.exit_code}: {" ".join(words)} '
@@ -452,6 +455,7 @@ class Fuzzer:
                 f'crashes (core restarts, 216): {codes.get(216, 0)}; '
                 f'answers lost: {self.unanswered}; timed out at the node (applied or not, as the '
                 f'revision said): {self.timed_out}; undefined exit codes: {len(self.undefined)}; '
+                f'internal errors (220): {codes.get(220, 0)}; '
                 f'rejected on the target: {self.rejected}, of which changed its state: '
                 f'{len(self.changed_by_rejected)}; axioms differing from the shadow: '
                 f'{len(differences)}' + (f' (over {self.epochs} fresh starts and the last state)'
@@ -504,7 +508,8 @@ def main():
     for seconds, words, args, code in fuzzer.slow[:20]:
         print(f'slow: {seconds} s {" ".join(words)} {[a[:40] for a in args]} -> {code}')
     ok = (alive and not fuzzer.undefined and not differences and not fuzzer.changed_by_rejected
-          and fuzzer.unanswered == 0 and fuzzer.codes.get(216, 0) == 0)
+          and fuzzer.unanswered == 0 and fuzzer.codes.get(216, 0) == 0
+          and fuzzer.codes.get(220, 0) == 0)
     return 0 if ok else 1
 
 
