@@ -314,7 +314,7 @@ class FilesystemFaults:
         audit.refusal_reported = any(d.get('refusing_changes') for d in self._damage())
         # The operator's way back: stop, check the filesystem, mount it again, start.
         self.node.stop()
-        subprocess.run(['umount', str(self.mount)], check=True)
+        self._unmount()
         subprocess.run(['e2fsck', '-fy', str(self.image)], capture_output=True)
         subprocess.run(['mount', '-o', 'loop', str(self.image), str(self.mount)], check=True)
         self._start()
@@ -329,7 +329,17 @@ class FilesystemFaults:
             self.armor.close()
         if self.node is not None:
             self.node.stop()
-        subprocess.run(['umount', str(self.mount)], capture_output=True)
+        self._unmount()
+
+    def _unmount(self) -> None:
+        """The core's JVM, stopped with its node, can hold the filesystem a moment longer."""
+        deadline = time.monotonic() + 60
+        while True:
+            done = subprocess.run(['umount', str(self.mount)], capture_output=True, text=True)
+            if done.returncode == 0 or 'not mounted' in done.stderr:
+                return
+            assert time.monotonic() < deadline, f'umount {self.mount}: {done.stderr}'
+            time.sleep(0.2)
 
 
 def junit_campaigns(rounds: int, stride: int) -> list:
