@@ -19,8 +19,8 @@ import java.util.function.Supplier;
 import org.semanticweb.owlapi.model.OWLDataFactory;
 import org.semanticweb.owlapi.model.OWLDocumentFormat;
 import org.semanticweb.owlapi.model.OWLInverseObjectPropertiesAxiom;
-import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLNaryAxiom;
+import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.RemoveAxiom;
@@ -369,13 +369,14 @@ public final class Reference {
         if (changes.isEmpty()) {
             return;
         }
-        changes.stream().filter(OWLOntologyChange::isAddAxiom).map(OWLOntologyChange::getAxiom)
-                .filter(a -> a instanceof OWLNaryAxiom<?> nary && nary.getOperandsAsList().size() < 2).findFirst()
-                .ifPresent(a -> {
-                    // SameIndividual(:a :a) parses to one operand, which no OWL syntax can write down.
-                    throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "an axiom of this kind needs two different"
-                            + " operands at least: " + a);
-                });
+        for (OWLOntologyChange change : changes) {
+            // SameIndividual(:a :a) parses to one operand, which no OWL syntax can write down.
+            if (change.isAddAxiom() && change.getAxiom() instanceof OWLNaryAxiom<?> nary
+                    && nary.getOperandsAsList().size() < 2) {
+                throw new ArmorException(ExitCode.WRONG_ARGUMENTS, "an axiom of this kind needs two different"
+                        + " operands at least: " + nary);
+            }
+        }
         if (bufferedManipulation) {
             pending.addAll(changes);
             return;
