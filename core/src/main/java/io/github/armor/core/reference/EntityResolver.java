@@ -29,7 +29,7 @@ public final class EntityResolver {
     // Names looked at on each side of an unknown name, in each of the two orders, for "did you mean".
     private static final int NEIGHBOURS = 8;
     private static final Pattern PLAIN_NAME = Pattern.compile("[^\\s<>\"{}|^`\\\\]+");
-    private static final Pattern ABSOLUTE_IRI = Pattern.compile("[A-Za-z][A-Za-z0-9+.-]*:[^\\s<>\"{}|^`\\\\]*");
+    private static final Pattern ABSOLUTE_IRI = Pattern.compile("[A-Za-z][A-Za-z0-9+.-]*:[^\\s<>\"{}|^`\\\\\\p{Cntrl}]*");
 
     private final OWLOntology ontology;
     private final OWLDataFactory factory;
@@ -225,7 +225,8 @@ public final class EntityResolver {
         return previous[m];
     }
 
-    private static IRI absoluteIri(String text, String argument) {
+    /** An argument that must be an absolute IRI: a scheme, and none of the characters RFC 3987 leaves out. */
+    static IRI absoluteIri(String text, String argument) {
         if (!ABSOLUTE_IRI.matcher(text).matches()) {
             throw new ArmorException(ExitCode.BAD_SYNTAX, "'" + argument + "' is not a valid absolute IRI");
         }

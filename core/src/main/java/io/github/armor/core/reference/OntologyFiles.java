@@ -12,8 +12,6 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.Supplier;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import org.semanticweb.owlapi.apibinding.OWLManager;
 import org.semanticweb.owlapi.formats.FunctionalSyntaxDocumentFormat;
 import org.semanticweb.owlapi.formats.ManchesterSyntaxDocumentFormat;
@@ -42,7 +40,6 @@ import org.slf4j.LoggerFactory;
  */
 public final class OntologyFiles {
     private static final Logger LOG = LoggerFactory.getLogger(OntologyFiles.class);
-    private static final Pattern NOT_IN_AN_IRI = Pattern.compile("[\\s<>\"{}|\\\\^`\\p{Cntrl}]");
     private static final Map<String, Supplier<OWLDocumentFormat>> FORMATS = Map.of(
             "RDFXML", RDFXMLDocumentFormat::new,
             "OWLXML", OWLXMLDocumentFormat::new,
@@ -152,20 +149,11 @@ public final class OntologyFiles {
     }
 
     public OWLOntology create(String ontologyIri) {
-        Matcher illegal = NOT_IN_AN_IRI.matcher(ontologyIri);
-        if (illegal.find()) {
-            // Accepted here, such an IRI could not be written to the state directory's checkpoint.
-            throw new ArmorException(ExitCode.BAD_SYNTAX, "'" + ontologyIri + "' is not an IRI: it holds "
-                    + (illegal.group().isBlank() ? "a space or control character" : "'" + illegal.group() + "'")
-                    + " (an IRI has no spaces, control characters, <, >, \", {, }, |, \\, ^ or `)");
-        }
-        if (!ontologyIri.isBlank() && !IRI.create(ontologyIri).isAbsolute()) {
-            throw new ArmorException(ExitCode.BAD_SYNTAX, "'" + ontologyIri + "' is not an absolute IRI: an ontology"
-                    + " IRI starts with a scheme, as http://www.example.org/" + ontologyIri + " (or is empty)");
-        }
+        // Checked first: an IRI the checkpoint's syntax cannot write back would be refused as not durable.
+        IRI iri = ontologyIri.isBlank() ? null : EntityResolver.absoluteIri(ontologyIri, ontologyIri);
         try {
             OWLOntologyManager manager = inlineManager();
-            return ontologyIri.isBlank() ? manager.createOntology() : manager.createOntology(IRI.create(ontologyIri));
+            return iri == null ? manager.createOntology() : manager.createOntology(iri);
         } catch (OWLOntologyCreationException e) {
             throw new ArmorException(ExitCode.LOAD_FAILED, "could not create ontology '" + ontologyIri + "': "
                     + e.getMessage(), e);
