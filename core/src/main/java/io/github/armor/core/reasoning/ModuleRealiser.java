@@ -32,7 +32,9 @@ import org.semanticweb.owlapi.reasoner.impl.OWLClassNodeSet;
  * reasoner per module would start too often); a batch that is inconsistent is halved until the
  * inconsistent modules are found, since the others' types are still needed. A module shaped like
  * one reasoned on before takes its result ({@link ModuleShapes}): a new robot asserted a Robot
- * has the types every such robot has, a room with three robots those of every such room.
+ * has the types every such robot has, a room with three robots those of every such room; and a
+ * module is reasoned on with its twins collapsed ({@link ModuleTwins}): a room with three robots
+ * of one kind as a room with one.
  */
 final class ModuleRealiser {
     /** Individuals per batch: large enough to start few reasoners, small enough to bound memory. */
@@ -79,7 +81,8 @@ final class ModuleRealiser {
     /** Reasons on the modules; every module comes back once, consistent with types or inconsistent. */
     List<Realised> realise(List<Module> modules, Function<Module, Set<OWLAxiom>> axiomsOf) {
         List<Realised> done = new ArrayList<>();
-        Batch batch = new Batch();
+        List<Pending> batch = new ArrayList<>();
+        int individuals = 0;
         // A module shaped like one waiting to be reasoned on takes that one's result afterwards.
         Map<Set<OWLAxiom>, Module> firstOfShape = new HashMap<>();
         Map<Module, List<Module>> followers = new IdentityHashMap<>();
@@ -87,7 +90,7 @@ final class ModuleRealiser {
         for (Module module : modules) {
             Set<OWLAxiom> axioms = axiomsOf.apply(module);
             ModuleShapes.Shape shape = shapes.shapeOf(module, axioms);
-            if (shape != null) {
+            if (shape != null && shape.key() != null) {
                 Realised known = shapes.lookup(module, shape);
                 if (known != null) {
                     done.add(known);
@@ -100,14 +103,19 @@ final class ModuleRealiser {
                     continue;
                 }
             }
-            batch.add(module, axioms, shape);
-            if (batch.individuals >= BATCH_INDIVIDUALS) {
-                reason(batch.modules, batch.axioms, batch.shapes, done);
-                batch = new Batch();
+            Pending pending = shape == null
+                    ? new Pending(module, axioms, module.namedMembers().toList(), null)
+                    : new Pending(module, shape.collapsed().axioms(), shape.collapsed().kept(), shape);
+            batch.add(pending);
+            individuals += pending.asked.size();
+            if (individuals >= BATCH_INDIVIDUALS) {
+                reason(batch, done);
+                batch = new ArrayList<>();
+                individuals = 0;
             }
         }
-        if (!batch.modules.isEmpty()) {
-            reason(batch.modules, batch.axioms, batch.shapes, done);
+        if (!batch.isEmpty()) {
+            reason(batch, done);
         }
         if (!followers.isEmpty()) {
             Map<Module, Realised> byModule = new IdentityHashMap<>();
@@ -118,18 +126,15 @@ final class ModuleRealiser {
         return done;
     }
 
-    /** Modules to reason on together, with their assertions and shapes (null: not compared). */
-    private static final class Batch {
-        final List<Module> modules = new ArrayList<>();
-        final List<Set<OWLAxiom>> axioms = new ArrayList<>();
-        final List<ModuleShapes.Shape> shapes = new ArrayList<>();
-        int individuals;
-
-        void add(Module module, Set<OWLAxiom> moduleAxioms, ModuleShapes.Shape shape) {
-            modules.add(module);
-            axioms.add(moduleAxioms);
-            shapes.add(shape);
-            individuals += module.members.size();
+    /**
+     * A module to reason on: the assertions the reasoner is given (its twins collapsed), the
+     * members whose types it is asked, and the module's shape (null: not collapsed).
+     */
+    private record Pending(Module module, Set<OWLAxiom> axioms, List<OWLNamedIndividual> asked,
+                           ModuleShapes.Shape shape) {
+        Realised spread(Realised ofAsked) {
+            return shape == null || !ofAsked.consistent() ? ofAsked
+                    : new Realised(module, true, shape.collapsed().spread(ofAsked.types()));
         }
     }
 
@@ -152,11 +157,10 @@ final class ModuleRealiser {
         }
     }
 
-    private void reason(List<Module> batch, List<Set<OWLAxiom>> axioms, List<ModuleShapes.Shape> shapesOf,
-                        List<Realised> done) {
+    private void reason(List<Pending> batch, List<Realised> done) {
         checkInterrupted();
         Set<OWLAxiom> union = new LinkedHashSet<>();
-        axioms.forEach(union::addAll);
+        batch.forEach(pending -> union.addAll(pending.axioms));
         List<Realised> found = withReasoner(union, reasoner -> {
             if (!reasoner.isConsistent()) {
                 return null;
@@ -170,29 +174,29 @@ final class ModuleRealiser {
             // All types are the most specific ones and everything above them: asked once per kind of individual.
             Map<NodeSet<OWLClass>, TypeProfile> byDirectTypes = new HashMap<>();
             List<Realised> realised = new ArrayList<>();
-            for (Module module : batch) {
+            for (Pending pending : batch) {
                 Map<OWLNamedIndividual, TypeProfile> types = new LinkedHashMap<>();
-                module.namedMembers().forEach(member -> types.put(member, byDirectTypes.computeIfAbsent(
+                pending.asked.forEach(member -> types.put(member, byDirectTypes.computeIfAbsent(
                         reasoner.getTypes(member, true), direct -> profiles.intern(
                                 TypeProfile.of(withSuperClasses(reasoner, direct), direct)))));
-                realised.add(new Realised(module, true, types));
+                realised.add(new Realised(pending.module, true, types));
             }
             return realised;
         });
         if (found != null) {
             for (int i = 0; i < batch.size(); i++) {
-                remember(shapesOf.get(i), found.get(i));
+                Realised all = batch.get(i).spread(found.get(i));
+                remember(batch.get(i).shape, all);
+                done.add(all);
             }
-            done.addAll(found);
         } else if (batch.size() == 1) {
-            Realised inconsistent = new Realised(batch.get(0), false, Map.of());
-            remember(shapesOf.get(0), inconsistent);
+            Realised inconsistent = new Realised(batch.get(0).module, false, Map.of());
+            remember(batch.get(0).shape, inconsistent);
             done.add(inconsistent);
         } else {
             int half = batch.size() / 2;
-            reason(batch.subList(0, half), axioms.subList(0, half), shapesOf.subList(0, half), done);
-            reason(batch.subList(half, batch.size()), axioms.subList(half, axioms.size()),
-                    shapesOf.subList(half, shapesOf.size()), done);
+            reason(batch.subList(0, half), done);
+            reason(batch.subList(half, batch.size()), done);
         }
     }
 
@@ -200,7 +204,7 @@ final class ModuleRealiser {
      * The realised classes each member belongs to: one instance question per class, which needs
      * no classification of the schema (SOMA's takes minutes), instead of every type of every member.
      */
-    private List<Realised> realiseTracked(OWLReasoner reasoner, List<Module> batch) {
+    private List<Realised> realiseTracked(OWLReasoner reasoner, List<Pending> batch) {
         Map<OWLClass, Set<OWLNamedIndividual>> instances = new HashMap<>();
         for (OWLClass owlClass : tracked) {
             instances.put(owlClass, reasoner.getInstances(owlClass, false).entities()
@@ -208,9 +212,9 @@ final class ModuleRealiser {
         }
         OWLClass thing = scratch.getOWLDataFactory().getOWLThing();
         List<Realised> realised = new ArrayList<>();
-        for (Module module : batch) {
+        for (Pending pending : batch) {
             Map<OWLNamedIndividual, TypeProfile> types = new LinkedHashMap<>();
-            module.namedMembers().forEach(member -> {
+            pending.asked.forEach(member -> {
                 Set<OWLClass> memberOf = new java.util.HashSet<>();
                 instances.forEach((owlClass, members) -> {
                     if (members.contains(member)) {
@@ -219,7 +223,7 @@ final class ModuleRealiser {
                 });
                 types.put(member, profiles.intern(TypeProfile.partial(memberOf, thing)));
             });
-            realised.add(new Realised(module, true, types));
+            realised.add(new Realised(pending.module, true, types));
         }
         return realised;
     }

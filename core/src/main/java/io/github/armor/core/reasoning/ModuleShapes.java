@@ -52,8 +52,10 @@ import org.semanticweb.owlapi.vocab.OWL2Datatype;
  * module whose other assertions mention a data property keeps its values.
  */
 final class ModuleShapes {
-    /** Modules larger than this are not compared (rarely repeated, and costly to rename). */
+    /** Modules larger than this, once their twins are collapsed, are not compared (rarely repeated, and costly to rename). */
     static final int LARGEST = 64;
+    /** Modules larger than this are not even collapsed (one reasoner batch holds them). */
+    private static final int COLLAPSED_AT_MOST = ModuleRealiser.BATCH_INDIVIDUALS;
     private static final int KEPT = 4096;
     private static final String PLACEHOLDER = "urn:armor:reasoning#individual";
     // Compiled once: a LOAD checks the literals of every module.
@@ -61,13 +63,17 @@ final class ModuleShapes {
     private static final java.util.regex.Pattern DECIMAL =
             java.util.regex.Pattern.compile("[+-]?([0-9]+(\\.[0-9]*)?|\\.[0-9]+)");
 
-    /** A module's shape, and its members in placeholder order. */
-    record Shape(Set<OWLAxiom> key, List<OWLNamedIndividual> order) {}
+    /**
+     * A module's shape (null when not compared: too large), its kept members in placeholder
+     * order, and the module with its twins collapsed, which is what a reasoner is given.
+     */
+    record Shape(Set<OWLAxiom> key, List<OWLNamedIndividual> order, ModuleTwins.Collapsed collapsed) {}
 
     /** What reasoning on a shape gave: consistency, and the types by placeholder. */
     private record Outcome(boolean consistent, List<TypeProfile> types) {}
 
     private final OWLOntologyManager manager;
+    private final ModuleTwins twins;
     private final Map<Set<OWLAxiom>, Outcome> known = new LinkedHashMap<>(16, 0.75f, true) {
         @Override
         protected boolean removeEldestEntry(Map.Entry<Set<OWLAxiom>, Outcome> eldest) {
@@ -83,6 +89,7 @@ final class ModuleShapes {
     /** @param schema what every module is reasoned with (it decides which values are {@link #blind}) */
     ModuleShapes(OWLOntologyManager manager, List<OWLAxiom> schema) {
         this.manager = manager;
+        this.twins = new ModuleTwins(manager);
         for (OWLAxiom axiom : schema) {
             if (!axiom.isLogicalAxiom()) {
                 continue;
@@ -160,16 +167,21 @@ final class ModuleShapes {
                 && DECIMAL.matcher(text).matches();
     }
 
-    /** The shape of a module with these assertions, or null when it is not compared (hub, size, anonymous individuals). */
+    /** The shape of a module with these assertions, or null when it is not collapsed (hub, size, anonymous individuals). */
     Shape shapeOf(Module module, Set<OWLAxiom> asserted) {
         // The hub's individuals are named in the schema: renaming them would change what it says.
-        if (module.hub || module.members.size() > LARGEST || module.members.stream().anyMatch(OWLIndividual::isAnonymous)) {
+        if (module.hub || module.members.size() > COLLAPSED_AT_MOST
+                || module.members.stream().anyMatch(OWLIndividual::isAnonymous)) {
             return null;
         }
-        Set<OWLAxiom> axioms = valuesRenamed(asserted);
-        List<OWLNamedIndividual> order = module.members.size() == 1
-                // Most modules have one individual: there is no order to find.
-                ? module.namedMembers().toList() : orderOfMembers(module, axioms);
+        ModuleTwins.Collapsed collapsed = twins.collapse(module, asserted);
+        List<OWLNamedIndividual> kept = collapsed.kept();
+        if (kept.size() > LARGEST) {
+            return new Shape(null, kept, collapsed);
+        }
+        Set<OWLAxiom> axioms = valuesRenamed(collapsed.axioms());
+        // Most modules have one individual: there is no order to find.
+        List<OWLNamedIndividual> order = kept.size() == 1 ? kept : orderOfMembers(kept, axioms);
         Map<OWLEntity, IRI> renaming = new HashMap<>();
         for (int i = 0; i < order.size(); i++) {
             renaming.put(order.get(i), IRI.create(PLACEHOLDER + i));
@@ -179,11 +191,11 @@ final class ModuleShapes {
         for (OWLAxiom axiom : axioms) {
             key.add(renamer.duplicateObject(axiom));
         }
-        return new Shape(Set.copyOf(key), List.copyOf(order));
+        return new Shape(Set.copyOf(key), List.copyOf(order), collapsed);
     }
 
-    /** The module's members ordered by what their assertions say (ties by IRI). */
-    private static List<OWLNamedIndividual> orderOfMembers(Module module, Set<OWLAxiom> axioms) {
+    /** The members ordered by what their assertions say (ties by IRI). */
+    private static List<OWLNamedIndividual> orderOfMembers(List<OWLNamedIndividual> members, Set<OWLAxiom> axioms) {
         Map<OWLIndividual, List<Long>> roles = new HashMap<>();
         for (OWLAxiom axiom : axioms) {
             List<OWLIndividual> about = AboxLinks.individualsOf(axiom).toList();
@@ -193,7 +205,7 @@ final class ModuleShapes {
             }
         }
         Map<OWLNamedIndividual, String> signature = new HashMap<>();
-        module.namedMembers().forEach(member -> {
+        members.forEach(member -> {
             List<Long> own = roles.getOrDefault(member, new ArrayList<>());
             own.sort(null);
             signature.put(member, own.toString());
@@ -206,7 +218,7 @@ final class ModuleShapes {
 
     /** The result for a module whose shape was reasoned on before, or null. */
     ModuleRealiser.Realised lookup(Module module, Shape shape) {
-        Outcome outcome = known.get(shape.key());
+        Outcome outcome = shape.key() == null ? null : known.get(shape.key());
         if (outcome == null) {
             return null;
         }
@@ -218,7 +230,7 @@ final class ModuleShapes {
         for (int i = 0; i < shape.order().size(); i++) {
             types.put(shape.order().get(i), outcome.types().get(i));
         }
-        return new ModuleRealiser.Realised(module, true, types);
+        return new ModuleRealiser.Realised(module, true, shape.collapsed().spread(types));
     }
 
     /** How many modules took the result of an earlier one (tests check that this path runs). */
@@ -236,10 +248,13 @@ final class ModuleShapes {
         for (int i = 0; i < toShape.order().size(); i++) {
             types.put(toShape.order().get(i), from.types().get(fromShape.order().get(i)));
         }
-        return new ModuleRealiser.Realised(to, true, types);
+        return new ModuleRealiser.Realised(to, true, toShape.collapsed().spread(types));
     }
 
     void remember(Shape shape, ModuleRealiser.Realised realised) {
+        if (shape.key() == null) {
+            return;
+        }
         List<TypeProfile> types = realised.consistent()
                 ? shape.order().stream().map(realised.types()::get).toList() : List.of();
         known.put(shape.key(), new Outcome(realised.consistent(), types));
