@@ -39,7 +39,8 @@ import org.semanticweb.owlapi.vocab.OWL2Datatype;
  * images of each other under a renaming of individuals, and OWL semantics does not depend on
  * names, so the reasoner's answer for one, renamed, is its answer for the other. The order only
  * decides how often shapes match: a tie broken differently gives a different shape (one more
- * module reasoned on), never a wrong answer.
+ * module reasoned on), never a wrong answer. The shape is taken after the module's twins are
+ * collapsed ({@link ModuleTwins}): a drawer with five cups has the shape of a drawer with one.
  *
  * <p>Data values are renamed too where the schema cannot tell one from another: a property
  * ({@link #blind}) that no schema axiom mentions but to say it is functional, has a domain, or
