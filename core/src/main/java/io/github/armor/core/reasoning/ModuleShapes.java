@@ -217,9 +217,9 @@ final class ModuleShapes {
         return order;
     }
 
-    /** The result for a module whose shape was reasoned on before, or null. */
+    /** The result for a module whose shape (a compared one: its key is set) was reasoned on before, or null. */
     ModuleRealiser.Realised lookup(Module module, Shape shape) {
-        Outcome outcome = shape.key() == null ? null : known.get(shape.key());
+        Outcome outcome = known.get(shape.key());
         if (outcome == null) {
             return null;
         }

@@ -10,8 +10,6 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Random;
 import java.util.Set;
-import java.util.TreeSet;
-import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -27,7 +25,6 @@ import org.semanticweb.owlapi.model.OWLAxiom;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLClassExpression;
 import org.semanticweb.owlapi.model.OWLDataFactory;
-import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLObjectProperty;
 import org.semanticweb.owlapi.model.OWLObjectPropertyAssertionAxiom;
@@ -35,8 +32,6 @@ import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.RemoveAxiom;
-import org.semanticweb.owlapi.model.parameters.Imports;
-import org.semanticweb.owlapi.reasoner.OWLReasoner;
 import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
 import org.semanticweb.owlapi.reasoner.SimpleConfiguration;
 
@@ -405,7 +400,7 @@ class ModularEquivalenceTest {
             assertTrue(modular.handlesRemovals(), () -> "rules must stay beside the modules: " + modular.wholeBecause()
                     + " " + after);
             compare(openllet, modular, after);
-            urgentSets.add(names(modular.getInstances(cls("URGENT"), false).entities()));
+            urgentSets.add(WholeOntologyAnswers.names(modular.getInstances(cls("URGENT"), false).entities()));
         }
         // The ticks must have moved URGENT both ways, through no room, some rooms and others.
         assertTrue(urgentSets.size() >= 3 && urgentSets.contains(Set.of())
@@ -442,7 +437,7 @@ class ModularEquivalenceTest {
                 new SimpleConfiguration());
         modular.isConsistent();
         compare(ReasonerRegistry.factory("PELLET"), modular, "the loaded robots");
-        assertEquals(Set.of("r2", "r3"), names(modular.getInstances(cls("High"), false).entities()));
+        assertEquals(Set.of("r2", "r3"), WholeOntologyAnswers.names(modular.getInstances(cls("High"), false).entities()));
         assertTrue(modular.reusedShapes() >= 3, () -> "robots alike but for the clock must share a result, not "
                 + modular.reusedShapes());
         modular.dispose();
@@ -578,41 +573,7 @@ class ModularEquivalenceTest {
     }
 
     private void compare(OWLReasonerFactory reasonerFactory, ModularReasoner modular, String after) {
-        OWLReasoner truth = reasonerFactory.createReasoner(ontology);
-        try {
-            assertEquals(truth.isConsistent(), modular.isConsistent(), () -> "consistency after " + after);
-            if (!truth.isConsistent()) {
-                return;
-            }
-            Set<OWLClass> classes = ontology.classesInSignature(Imports.INCLUDED).collect(Collectors.toSet());
-            classes.add(factory.getOWLThing());
-            for (OWLClass owlClass : classes) {
-                assertEquals(names(truth.getInstances(owlClass, false).entities()),
-                        names(modular.getInstances(owlClass, false).entities()),
-                        () -> "instances of " + owlClass + " after " + after);
-            }
-            List<OWLObjectProperty> ruleProperties = ontology.axioms(AxiomType.SWRL_RULE)
-                    .flatMap(rule -> rule.objectPropertiesInSignature())
-                    .filter(p -> !p.getIRI().toString().startsWith("http://www.w3.org/2002/07/owl#")).distinct().toList();
-            for (OWLNamedIndividual individual : ontology.individualsInSignature(Imports.INCLUDED).toList()) {
-                for (OWLObjectProperty property : ruleProperties) {
-                    assertEquals(names(truth.getObjectPropertyValues(individual, property).entities()),
-                            names(modular.getObjectPropertyValues(individual, property).entities()),
-                            () -> property + " of " + individual + " after " + after);
-                }
-                for (boolean direct : new boolean[] {false, true}) {
-                    assertEquals(names(truth.getTypes(individual, direct).entities()),
-                            names(modular.getTypes(individual, direct).entities()),
-                            () -> (direct ? "direct " : "") + "types of " + individual + " after " + after);
-                }
-            }
-        } finally {
-            truth.dispose();
-        }
-    }
-
-    private static Set<String> names(Stream<? extends OWLEntity> entities) {
-        return entities.map(e -> e.getIRI().getShortForm()).collect(Collectors.toCollection(TreeSet::new));
+        WholeOntologyAnswers.assertSameAnswers(reasonerFactory, ontology, modular, after);
     }
 
     /** Rooms in zones of one building (a part-of tree), adjacent rooms in a row, agents in rooms, the dock. */

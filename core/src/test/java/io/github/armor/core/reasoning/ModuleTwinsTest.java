@@ -10,9 +10,6 @@ import io.github.armor.core.reference.ReasonerRegistry;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.TreeSet;
-import java.util.stream.Collectors;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -23,15 +20,12 @@ import org.semanticweb.owlapi.model.IRI;
 import org.semanticweb.owlapi.model.OWLAxiom;
 import org.semanticweb.owlapi.model.OWLClass;
 import org.semanticweb.owlapi.model.OWLDataFactory;
-import org.semanticweb.owlapi.model.OWLEntity;
 import org.semanticweb.owlapi.model.OWLIndividual;
 import org.semanticweb.owlapi.model.OWLNamedIndividual;
 import org.semanticweb.owlapi.model.OWLOntology;
 import org.semanticweb.owlapi.model.OWLOntologyChange;
 import org.semanticweb.owlapi.model.OWLOntologyManager;
 import org.semanticweb.owlapi.model.RemoveAxiom;
-import org.semanticweb.owlapi.model.parameters.Imports;
-import org.semanticweb.owlapi.reasoner.OWLReasoner;
 import org.semanticweb.owlapi.reasoner.OWLReasonerFactory;
 import org.semanticweb.owlapi.reasoner.SimpleConfiguration;
 
@@ -90,7 +84,7 @@ class ModuleTwinsTest {
         ModuleTwins twins = new ModuleTwins(manager);
         ModuleTwins.Collapsed drawer1 = twins.collapse(module("drawer1", "cup1", "cup2", "cup3"),
                 assertionsOf("drawer1", "cup1", "cup2", "cup3"));
-        assertEquals(Set.of("drawer1", "cup1"), names(drawer1.kept().stream()));
+        assertEquals(Set.of("drawer1", "cup1"), WholeOntologyAnswers.names(drawer1.kept().stream()));
         assertEquals(individual("cup1"), drawer1.twinOf().get(individual("cup3")));
         assertTrue(drawer1.axioms().stream().noneMatch(a -> a.containsEntityInSignature(individual("cup2"))));
         // Told different: the axiom names both, so they stay apart (and the drawer holds two tableware).
@@ -103,7 +97,7 @@ class ModuleTwinsTest {
         ModuleTwins.Collapsed cupboard = twins.collapse(
                 module("cupboard1", "drawer5", "drawer6", "cup9", "cup10", "plate2"),
                 assertionsOf("cupboard1", "drawer5", "drawer6", "cup9", "cup10", "plate2"));
-        assertEquals(Set.of("cupboard1", "drawer5", "drawer6", "cup10", "plate2"), names(cupboard.kept().stream()));
+        assertEquals(Set.of("cupboard1", "drawer5", "drawer6", "cup10", "plate2"), WholeOntologyAnswers.names(cupboard.kept().stream()));
     }
 
     @Test
@@ -155,25 +149,10 @@ class ModuleTwinsTest {
     }
 
     private void compare(OWLReasonerFactory reasonerFactory, ModularReasoner modular, String when) {
-        OWLReasoner truth = reasonerFactory.createReasoner(ontology);
-        try {
-            assertEquals(truth.isConsistent(), modular.isConsistent(), () -> "consistency, " + when);
-            if (!truth.isConsistent()) {
-                return;
-            }
-            Set<OWLClass> classes = ontology.classesInSignature(Imports.INCLUDED).collect(Collectors.toSet());
-            for (OWLClass owlClass : classes) {
-                assertEquals(names(truth.getInstances(owlClass, false).entities()),
-                        names(modular.getInstances(owlClass, false).entities()), () -> owlClass + ", " + when);
-            }
-            for (OWLNamedIndividual individual : ontology.individualsInSignature().toList()) {
-                assertEquals(names(truth.getTypes(individual, false).entities()),
-                        names(modular.getTypes(individual, false).entities()), () -> "types of " + individual + ", " + when);
-            }
-        } finally {
-            truth.dispose();
+        WholeOntologyAnswers.assertSameAnswers(reasonerFactory, ontology, modular, when);
+        if (modular.isConsistent()) {
+            assertFalse(modular.getInstances(cls("WithCup"), false).isEmpty(), "the kitchen must have drawers with cups");
         }
-        assertFalse(modular.getInstances(cls("WithCup"), false).isEmpty(), "the kitchen must have drawers with cups");
     }
 
     /** A module of these individuals (as AboxModules makes them: every assertion about them). */
@@ -200,9 +179,5 @@ class ModuleTwinsTest {
 
     private OWLClass cls(String name) {
         return factory.getOWLClass(IRI.create(NS + name));
-    }
-
-    private static Set<String> names(Stream<? extends OWLEntity> entities) {
-        return entities.map(e -> e.getIRI().getShortForm()).collect(Collectors.toCollection(TreeSet::new));
     }
 }
